@@ -1,0 +1,33 @@
+#pragma once
+// Work counters (rays, primitive tests, BVH node visits). Thread-local plain
+// integers: an increment is one add on a cache line nobody else touches, so the
+// counters stay on in release builds. Tests read them to count work instead of
+// timing it; the renderer sums them over its threads.
+#include <cstdint>
+
+namespace pt {
+
+struct WorkCounters {
+  uint64_t rays = 0;             // rays traced against the scene (camera, bounce and shadow)
+  uint64_t primitive_tests = 0;  // ray-primitive intersection tests
+  uint64_t node_visits = 0;      // BVH nodes whose box was tested
+
+  WorkCounters& operator+=(const WorkCounters& o) {
+    rays += o.rays;
+    primitive_tests += o.primitive_tests;
+    node_visits += o.node_visits;
+    return *this;
+  }
+};
+
+// This thread's counters.
+WorkCounters& work_counters();
+
+// Zeroes this thread's counters and returns what they held.
+inline WorkCounters take_work_counters() {
+  WorkCounters c = work_counters();
+  work_counters() = WorkCounters{};
+  return c;
+}
+
+}  // namespace pt

@@ -1,0 +1,71 @@
+#pragma once
+#include <functional>
+
+#include "core/rng.h"
+#include "geometry/intersection.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+// A pixel's estimate and how many samples it took.
+struct PixelEstimate {
+  Spectrum radiance{0.0};
+  int num_samples = 0;
+};
+
+// Offset that moves secondary-ray origins off the surface they leave (and
+// shortens shadow rays before their target) to avoid self-intersection.
+constexpr double kRayEpsilon = 1e-5;
+
+// The estimators of the assignment. Each function below names its task; the
+// students' versions live in tasks/, the solutions in reference/. Randomness
+// comes only from the Rng passed in, so results are reproducible per pixel.
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const RenderSettings& settings)
+      : scene(&scene), camera(&scene.camera), settings(settings) {}
+  virtual ~PathTracer() = default;
+
+  // ---- Part 1 ----
+  // P1T2: average of settings.ns_aa radiance samples through pixel (x, y),
+  // (0, 0) the bottom-left pixel of a settings.width x settings.height image:
+  // uniformly jittered inside the pixel, or its centre when ns_aa == 1.
+  PixelEstimate raytrace_pixel(int x, int y, Rng& rng) const;
+
+  // ---- Part 3 ----
+  // P3T2: radiance emitted towards the ray origin by the surface hit.
+  Spectrum zero_bounce_radiance(const Ray& r, const Intersection& isect) const;
+  // P3T3: direct lighting at the hit by uniform hemisphere sampling.
+  Spectrum estimate_direct_lighting_hemisphere(const Ray& r, const Intersection& isect, Rng& rng) const;
+  // P3T4: direct lighting at the hit by sampling the lights.
+  Spectrum estimate_direct_lighting_importance(const Ray& r, const Intersection& isect, Rng& rng) const;
+  // P3T5: one of the two above, as settings.direct_hemisphere_sample says.
+  Spectrum one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng) const;
+
+  // ---- Part 4 ----
+  // P4T1/P4T2: direct light plus recursively sampled indirect light with
+  // Russian roulette; r.depth is the number of bounces still allowed.
+  Spectrum at_least_one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng) const;
+  // P4T3: radiance along a camera ray. Virtual so that tests can stand in a
+  // known radiance function when they check pixel sampling.
+  virtual Spectrum est_radiance_global_illumination(const Ray& r, Rng& rng) const;
+
+  // ---- Part 5 ----
+  // P5T1: like raytrace_pixel, but stops early once the pixel has converged
+  // (sample_adaptively decides when).
+  PixelEstimate raytrace_pixel_adaptive(int x, int y, Rng& rng) const;
+
+  const Scene* scene;
+  const Camera* camera;
+  RenderSettings settings;
+};
+
+// P5T1: draws samples from next_sample in batches of samples_per_batch until
+// 1.96 * sigma / sqrt(n) <= max_tolerance * mu for the illuminance of the
+// samples (checked after each whole batch), or max_samples are taken. Returns
+// the mean radiance and the sample count.
+PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, int max_samples, int samples_per_batch,
+                                double max_tolerance);
+
+}  // namespace pt

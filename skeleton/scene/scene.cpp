@@ -1,0 +1,71 @@
+#include "scene/scene.h"
+
+#include "core/stats.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+
+namespace pt {
+
+const Mesh* Scene::add_mesh(Mesh mesh) {
+  if (mesh.normals.size() != mesh.positions.size()) mesh.compute_vertex_normals();
+  meshes.push_back(std::make_unique<Mesh>(std::move(mesh)));
+  const Mesh* m = meshes.back().get();
+  for (const auto& f : m->faces) primitives.push_back(std::make_unique<Triangle>(m, f[0], f[1], f[2]));
+  return m;
+}
+
+void Scene::add_sphere(const Vec3& center, double radius, const BSDF* bsdf) {
+  primitives.push_back(std::make_unique<Sphere>(center, radius, bsdf));
+}
+
+const Mesh* Scene::add_quad(const Vec3& c, const Vec3& ex, const Vec3& ey, const BSDF* bsdf) {
+  Mesh m;
+  m.name = "quad";
+  Vec3 hx = 0.5 * ex, hy = 0.5 * ey;
+  m.positions = {c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy};
+  Vec3 n = glm::normalize(glm::cross(ex, ey));
+  m.normals.assign(4, n);
+  m.faces = {{0, 1, 2}, {0, 2, 3}};
+  m.bsdf = bsdf;
+  return add_mesh(std::move(m));
+}
+
+void Scene::add_area_light(const Spectrum& radiance, const Vec3& center, const Vec3& ex, const Vec3& ey) {
+  Vec3 n = glm::normalize(glm::cross(ex, ey));
+  add_light<AreaLight>(radiance, center, n, ex, ey);
+  add_quad(center, ex, ey, add_bsdf<EmissionBSDF>(radiance));
+}
+
+void Scene::build(size_t max_leaf_size) {
+  std::vector<Primitive*> prims;
+  prims.reserve(primitives.size());
+  for (auto& p : primitives) prims.push_back(p.get());
+  bvh = std::make_unique<BVHAccel>(std::move(prims), max_leaf_size);
+}
+
+bool Scene::intersect(const Ray& r, Intersection* isect) const {
+  ++work_counters().rays;
+  return bvh->intersect(r, isect);
+}
+
+bool Scene::has_intersection(const Ray& r) const {
+  ++work_counters().rays;
+  return bvh->has_intersection(r);
+}
+
+Spectrum Scene::background(const Vec3&) const {
+  Spectrum L(0.0);
+  for (const auto& l : lights)
+    if (auto* sky = dynamic_cast<const SkyLight*>(l.get())) L += sky->radiance;
+  return L;
+}
+
+size_t Scene::triangle_count() const {
+  size_t n = 0;
+  for (const auto& m : meshes) n += m->faces.size();
+  return n;
+}
+
+BBox Scene::bounds() const { return bvh ? bvh->get_bbox() : BBox(); }
+
+}  // namespace pt

@@ -1,0 +1,25 @@
+// Part 5: adaptive sampling. See handouts/part5.md.
+#include <cmath>
+
+#include "core/not_implemented.h"
+#include "render/pathtracer.h"
+
+namespace pt {
+
+PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, int max_samples, int samples_per_batch,
+                                double max_tolerance) {
+  // TODO(P5T1): draw samples, keeping s1 and s2 (sums of illuminance and its
+  // square). After each whole batch compute mu = s1/n and
+  // sigma^2 = (s2 - s1^2/n)/(n - 1); stop once 1.96 sigma / sqrt(n) <=
+  // max_tolerance * mu. Never take more than max_samples. Return the mean
+  // radiance and n.
+  throw NotImplemented("P5T1 sample_adaptively");
+}
+
+PixelEstimate PathTracer::raytrace_pixel_adaptive(int x, int y, Rng& rng) const {
+  // TODO(P5T1): raytrace_pixel's sampling, with sample_adaptively deciding
+  // when to stop (settings.ns_aa, samples_per_batch, max_tolerance).
+  throw NotImplemented("P5T1 PathTracer::raytrace_pixel_adaptive");
+}
+
+}  // namespace pt
