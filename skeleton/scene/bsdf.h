@@ -18,16 +18,20 @@ class BSDF {
   virtual Spectrum get_emission(const Vec3& /*wo*/) const { return Spectrum(0.0); }
 };
 
-// Lambertian reflection.
+// Lambertian reflection, optionally also emitting (a glowing wall, as in the
+// white furnace test, where every surface both reflects and emits).
 class DiffuseBSDF : public BSDF {
  public:
-  explicit DiffuseBSDF(const Spectrum& albedo) : reflectance(albedo) {}
+  explicit DiffuseBSDF(const Spectrum& albedo, const Spectrum& emission = Spectrum(0.0))
+      : reflectance(albedo), emission(emission) {}
   // P3T1: albedo / pi.
   Spectrum f(const Vec3& wo, const Vec3& wi) const override;
   // P3T1: cosine-weighted sample (core/sampling.h) with its pdf.
   Spectrum sample_f(const Vec3& wo, Vec3* wi, double* pdf, Rng& rng) const override;
+  Spectrum get_emission(const Vec3& wo) const override { return wo.z > 0.0 ? emission : Spectrum(0.0); }
 
   Spectrum reflectance;
+  Spectrum emission;
 };
 
 // A light-emitting surface that reflects nothing.

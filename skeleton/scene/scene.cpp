@@ -30,10 +30,13 @@ const Mesh* Scene::add_quad(const Vec3& c, const Vec3& ex, const Vec3& ey, const
   return add_mesh(std::move(m));
 }
 
-void Scene::add_area_light(const Spectrum& radiance, const Vec3& center, const Vec3& ex, const Vec3& ey) {
+void Scene::add_area_light(const Spectrum& radiance, const Vec3& center, const Vec3& ex, const Vec3& ey,
+                           const Spectrum& albedo) {
   Vec3 n = glm::normalize(glm::cross(ex, ey));
   add_light<AreaLight>(radiance, center, n, ex, ey);
-  add_quad(center, ex, ey, add_bsdf<EmissionBSDF>(radiance));
+  const BSDF* bsdf = albedo == Spectrum(0.0) ? static_cast<const BSDF*>(add_bsdf<EmissionBSDF>(radiance))
+                                             : add_bsdf<DiffuseBSDF>(albedo, radiance);
+  add_quad(center, ex, ey, bsdf);
 }
 
 void Scene::build(size_t max_leaf_size) {

@@ -37,7 +37,9 @@ class Scene {
   // its normal is normalize(cross(ex, ey)).
   const Mesh* add_quad(const Vec3& center, const Vec3& ex, const Vec3& ey, const BSDF* bsdf);
   // An area light together with the emitting quad that camera rays can see.
-  void add_area_light(const Spectrum& radiance, const Vec3& center, const Vec3& ex, const Vec3& ey);
+  // A non-zero albedo makes the quad reflect too (a glowing diffuse wall).
+  void add_area_light(const Spectrum& radiance, const Vec3& center, const Vec3& ex, const Vec3& ey,
+                      const Spectrum& albedo = Spectrum(0.0));
 
   // Builds the BVH; call after the last shape is added.
   void build(size_t max_leaf_size = 4);

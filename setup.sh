@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# One-time set-up: installs the Debian packages the project needs (only those
+# missing), builds the reference renderer and renders the default scene.
+#   ./setup.sh              all of it
+#   ./setup.sh --deps-only  just the packages
+set -euo pipefail
+cd "$(dirname "$0")"
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libglm-dev libstb-dev libtinyexr-dev libtinyobjloader-dev
+  nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev
+  libboost-math-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  echo "Installing: ${missing[*]}"
+  $sudo apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+[ "${1:-}" = "--deps-only" ] && exit 0
+
+cmake --preset default
+cmake --build --preset default --target pathtracer-reference pathtracer
+
+mkdir -p out
+./build/pathtracer-reference scenes/cornell_spheres.json -s 64 -l 4 -m 5 -r 480 360 -f out/cornell_spheres.png
+echo "Open out/cornell_spheres.png (the linear HDR image is out/cornell_spheres.exr)."

@@ -1,0 +1,101 @@
+// The tiled renderer: determinism across threads, NaN accounting, failures.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/not_implemented.h"
+#include "render/renderer.h"
+#include "support/scene_builders.h"
+
+namespace pt {
+namespace {
+
+RenderSettings small_settings() {
+  RenderSettings s;
+  s.width = 24;
+  s.height = 20;  // not a multiple of the tile size: partial tiles are exercised
+  s.ns_aa = 4;
+  s.ns_area_light = 2;
+  s.max_ray_depth = 3;
+  s.seed = 7;
+  return s;
+}
+
+TEST(Renderer, SameImageWithOneAndTwoThreads) {
+  Scene scene = test::make_cornell_box();
+  PathTracer tracer(scene, small_settings());
+  RenderResult one = render(tracer, 1), two = render(tracer, 2);
+  ASSERT_TRUE(one.ok()) << one.error;
+  ASSERT_TRUE(two.ok()) << two.error;
+  for (size_t i = 0; i < one.image.pixels.size(); ++i)
+    ASSERT_EQ(one.image.pixels[i], two.image.pixels[i]) << "pixel " << i % 24 << "," << i / 24;
+  EXPECT_EQ(one.work.rays, two.work.rays);
+  EXPECT_EQ(one.nonfinite_pixels, 0u);
+}
+
+TEST(Renderer, SeedChangesTheNoise) {
+  Scene scene = test::make_cornell_box();
+  RenderSettings a = small_settings(), b = small_settings();
+  b.seed = a.seed + 1;
+  RenderResult ra = render(PathTracer(scene, a), 1), rb = render(PathTracer(scene, b), 1);
+  int differ = 0;
+  for (size_t i = 0; i < ra.image.pixels.size(); ++i) differ += ra.image.pixels[i] != rb.image.pixels[i];
+  EXPECT_GT(differ, int(ra.image.pixels.size()) / 2);
+}
+
+TEST(Renderer, RecordsSampleCountsAndWork) {
+  Scene scene = test::make_cornell_box();
+  RenderSettings s = small_settings();
+  RenderResult r = render(PathTracer(scene, s), 2);
+  for (int c : r.sample_counts) ASSERT_EQ(c, s.ns_aa);
+  // Every camera sample traces at least its camera ray.
+  EXPECT_GE(r.work.rays, uint64_t(s.width) * s.height * s.ns_aa);
+  EXPECT_GT(r.work.primitive_tests, 0u);
+}
+
+// Radiance that is NaN in one column and infinite in another.
+class PoisonedTracer : public PathTracer {
+ public:
+  using PathTracer::PathTracer;
+  Spectrum est_radiance_global_illumination(const Ray& r, Rng&) const override {
+    if (r.d.x < -0.2) return Spectrum(std::nan(""));
+    if (r.d.x > 0.2) return Spectrum(INFINITY, 0, 0);
+    return Spectrum(1.0);
+  }
+};
+
+TEST(Renderer, CountsNonFinitePixelsAndWritesThemBlack) {
+  Scene scene = test::make_cornell_box();
+  RenderSettings s = small_settings();
+  s.ns_aa = 1;
+  PoisonedTracer tracer(scene, s);
+  RenderResult r = render(tracer, 2);
+  ASSERT_TRUE(r.ok()) << r.error;
+  uint64_t black = 0, finite = 0;
+  for (const Spectrum& p : r.image.pixels) {
+    finite += is_finite(p);
+    black += p == Spectrum(0.0);
+  }
+  EXPECT_EQ(finite, r.image.pixels.size());
+  EXPECT_GT(r.nonfinite_pixels, 0u);
+  EXPECT_EQ(r.nonfinite_pixels, black);
+}
+
+class ThrowingTracer : public PathTracer {
+ public:
+  using PathTracer::PathTracer;
+  Spectrum est_radiance_global_illumination(const Ray&, Rng&) const override {
+    throw NotImplemented("P4T3 PathTracer::est_radiance_global_illumination");
+  }
+};
+
+TEST(Renderer, ATaskExceptionStopsTheRenderWithItsMessage) {
+  Scene scene = test::make_cornell_box();
+  ThrowingTracer tracer(scene, small_settings());
+  RenderResult r = render(tracer, 2);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("not implemented: P4T3"), std::string::npos) << r.error;
+}
+
+}  // namespace
+}  // namespace pt
