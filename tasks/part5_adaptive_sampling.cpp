@@ -10,9 +10,10 @@ PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, in
                                 double max_tolerance) {
   // TODO(P5T1): draw samples, keeping s1 and s2 (sums of illuminance and its
   // square). After each whole batch compute mu = s1/n and
-  // sigma^2 = (s2 - s1^2/n)/(n - 1); stop once 1.96 sigma / sqrt(n) <=
-  // max_tolerance * mu. Never take more than max_samples. Return the mean
-  // radiance and n.
+  // sigma^2 = (s2 - s1^2/n)/(n - 1) (clamp it at 0: rounding can make a
+  // constant pixel's variance slightly negative); stop once
+  // 1.96 sigma / sqrt(n) <= max_tolerance * mu. Never take more than
+  // max_samples. Return the mean radiance and n.
   throw NotImplemented("P5T1 sample_adaptively");
 }
 

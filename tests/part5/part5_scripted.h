@@ -1,0 +1,142 @@
+#pragma once
+// Scripted pixels for the Part 5 tests: sample sequences fixed in advance, so
+// that the exact number of samples the stopping rule takes is known in closed
+// form, and no test depends on random numbers.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/vec.h"
+#include "render/pathtracer.h"
+#include "scene/scene.h"
+
+namespace pt::test::part5 {
+
+// Sample i (counting from 0) of a pixel is value(i); text describes the
+// sequence in failure messages.
+struct Script {
+  std::string text;
+  std::function<Spectrum(int)> value;
+};
+
+inline Script constant(const Spectrum& c) {
+  std::ostringstream os;
+  os << "constant " << c << " (illuminance " << illuminance(c) << ")";
+  return {os.str(), [c](int) { return c; }};
+}
+
+// a, b, a, b, ...
+inline Script alternating(const Spectrum& a, const Spectrum& b) {
+  std::ostringstream os;
+  os << "alternating " << a << ", " << b << ", ... (illuminance " << illuminance(a) << ", " << illuminance(b) << ")";
+  return {os.str(), [a, b](int i) { return i % 2 == 0 ? a : b; }};
+}
+
+// pattern[0], pattern[1], ..., pattern[P-1], pattern[0], ...
+inline Script periodic(const std::vector<Spectrum>& pattern) {
+  std::ostringstream os;
+  os << "repeating";
+  for (const auto& p : pattern) os << " " << p;
+  os << " ...";
+  return {os.str(), [pattern](int i) { return pattern[size_t(i) % pattern.size()]; }};
+}
+
+// Mean colour of samples 0 .. n-1 of a script.
+inline Spectrum mean_of_first(const Script& s, int n) {
+  Spectrum sum(0.0);
+  for (int i = 0; i < n; ++i) sum += s.value(i);
+  return n > 0 ? sum / double(n) : Spectrum(0.0);
+}
+
+// What sample_adaptively did with a script.
+struct Outcome {
+  PixelEstimate estimate;
+  int calls = 0;       // times next_sample was called
+  std::string inputs;  // the call, for failure messages
+};
+
+// Runs sample_adaptively on a script, counting the calls of next_sample. An
+// implementation that ignores max_samples is stopped (by an exception) after
+// max_samples + 1000 calls rather than hanging the test.
+inline Outcome run_script(const Script& s, int max_samples, int samples_per_batch, double max_tolerance) {
+  Outcome out;
+  std::ostringstream in;
+  in << "sample_adaptively(next_sample, max_samples=" << max_samples << ", samples_per_batch=" << samples_per_batch
+     << ", max_tolerance=" << max_tolerance << ") with next_sample = " << s.text;
+  out.inputs = in.str();
+  const int guard = max_samples + 1000;
+  auto next_sample = [&]() -> Spectrum {
+    if (out.calls >= guard)
+      throw std::runtime_error("next_sample called " + std::to_string(out.calls) + " times with max_samples=" +
+                               std::to_string(max_samples) + ": the loop does not stop at max_samples");
+    return s.value(out.calls++);
+  };
+  out.estimate = sample_adaptively(next_sample, max_samples, samples_per_batch, max_tolerance);
+  return out;
+}
+
+inline bool spectrum_near(const Spectrum& a, const Spectrum& b, double rel = 1e-9) {
+  for (int c = 0; c < 3; ++c)
+    if (!(std::abs(a[c] - b[c]) <= rel * std::max(1.0, std::abs(b[c])))) return false;
+  return true;
+}
+
+// The stopping count, the call count and the mean of exactly the samples taken.
+inline void expect_stops_at(const Script& s, int max_samples, int samples_per_batch, double max_tolerance,
+                            int expected_n, const std::string& why) {
+  Outcome o = run_script(s, max_samples, samples_per_batch, max_tolerance);
+  EXPECT_EQ(o.estimate.num_samples, expected_n) << o.inputs << "\nexpected to stop after " << expected_n
+                                                << " samples: " << why;
+  EXPECT_EQ(o.calls, o.estimate.num_samples)
+      << o.inputs << "\nthe returned sample count must equal the number of times next_sample was called";
+  Spectrum want = mean_of_first(s, o.calls);
+  EXPECT_TRUE(spectrum_near(o.estimate.radiance, want))
+      << o.inputs << "\nreturned mean " << o.estimate.radiance << " but the mean of the " << o.calls
+      << " samples taken is " << want;
+}
+
+// The same, with the caller's line in the failure message.
+#define EXPECT_STOPS_AT(...)                                   \
+  do {                                                         \
+    SCOPED_TRACE("expectation made here");                     \
+    ::pt::test::part5::expect_stops_at(__VA_ARGS__);           \
+  } while (0)
+
+// A PathTracer whose radiance estimate is a script: the i-th call returns
+// value(i). It records the camera rays it is given.
+class ScriptedTracer : public PathTracer {
+ public:
+  ScriptedTracer(const Scene& scene, const RenderSettings& s, Script script)
+      : PathTracer(scene, s), script(std::move(script)) {}
+
+  Spectrum est_radiance_global_illumination(const Ray& r, Rng&) const override {
+    if (calls >= settings.ns_aa + 1000)
+      throw std::runtime_error("est_radiance_global_illumination called " + std::to_string(calls) +
+                               " times with ns_aa=" + std::to_string(settings.ns_aa) +
+                               ": the pixel loop does not stop at ns_aa");
+    rays.push_back(r);
+    return script.value(calls++);
+  }
+
+  std::string describe(int x, int y) const {
+    std::ostringstream os;
+    os << "raytrace_pixel_adaptive(x=" << x << ", y=" << y << ") with width=" << settings.width
+       << ", height=" << settings.height << ", ns_aa=" << settings.ns_aa
+       << ", samples_per_batch=" << settings.samples_per_batch << ", max_tolerance=" << settings.max_tolerance
+       << ", radiance estimate = " << script.text;
+    return os.str();
+  }
+
+  Script script;
+  mutable int calls = 0;
+  mutable std::vector<Ray> rays;
+};
+
+}  // namespace pt::test::part5
