@@ -4,6 +4,7 @@
 //                             flushed at once, so a grader keeps the results of
 //                             the tests that ran before a crash or a hang
 //   --pt_seed=N               seed offset for statistical tests (see seed.h)
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -73,7 +74,10 @@ class GradingListener : public testing::EmptyTestEventListener {
                            {"seconds", r.elapsed_time() / 1000.0},
                            {"message", messages}};
     if (const GradedTest* g = find(info.test_suite_name(), info.name())) line.update(describe(*g));
-    std::ofstream(path_, std::ios::app) << line.dump() << "\n" << std::flush;
+    // A student message may hold invalid UTF-8; replace it rather than throw
+    // inside the listener, which would abort the binary.
+    std::ofstream(path_, std::ios::app) << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n"
+                                        << std::flush;
   }
 
  private:
