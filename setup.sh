@@ -30,5 +30,5 @@ cmake --preset default
 cmake --build --preset default --target pathtracer-reference pathtracer
 
 mkdir -p out
-./build/pathtracer-reference scenes/cornell_spheres.json -s 64 -l 4 -m 5 -r 480 360 -f out/cornell_spheres.png
+./build/pathtracer-reference scenes/cornell_spheres.json -s 32 -l 4 -m 5 -r 480 360 -f out/cornell_spheres.png
 echo "Open out/cornell_spheres.png (the linear HDR image is out/cornell_spheres.exr)."
