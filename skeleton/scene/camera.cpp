@@ -1,6 +1,7 @@
 #include "scene/camera.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace pt {
 
@@ -9,6 +10,8 @@ Camera::Camera(const Vec3& position, const Vec3& target, const Vec3& up, double 
     : pos(position), hfov(hfov_deg), vfov(vfov_deg), near_clip(near), far_clip(far) {
   Vec3 back = glm::normalize(position - target);
   Vec3 right = glm::normalize(glm::cross(up, back));
+  if (!is_finite(back) || !is_finite(right))
+    throw std::invalid_argument("Camera: position equals target, or up is parallel to the view direction");
   c2w = Mat3(right, glm::cross(back, right), back);
 }
 

@@ -1,0 +1,373 @@
+// P1T4 Sphere::test, Sphere::has_intersection, Sphere::intersect. Rays are
+// placed by their closest approach to the centre: a ray with unit direction u
+// that passes at distance h from the centre c, reaching its closest point
+// after a distance D, has roots D -+ sqrt(r^2 - h^2).
+#include <algorithm>
+#include <sstream>
+
+#include "support/graded.h"
+#include "support/part1_builders.h"
+#include "support/seed.h"
+
+namespace pt::test::p1 {
+namespace {
+
+// O(1) geometry, a dozen flops: 1e-9 is generous for any formulation.
+constexpr double kTol = 1e-9;
+
+// A ray with unit direction u whose closest approach to the sphere's centre
+// is the point c + h p (p a unit vector orthogonal to u), reached at t = D.
+struct Approach {
+  Vec3 u, p;
+  double D, h;
+};
+
+// Unit vector orthogonal to u, in a direction that depends on `angle`.
+Vec3 orthogonal(const Vec3& u, double angle) {
+  Vec3 a = std::abs(u.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  Vec3 e1 = glm::normalize(glm::cross(u, a)), e2 = glm::cross(u, e1);
+  return std::cos(angle) * e1 + std::sin(angle) * e2;
+}
+
+Approach approach(const Vec3& dir, double D, double h, double angle = 0.7) {
+  Vec3 u = glm::normalize(dir);
+  return {u, orthogonal(u, angle), D, h};
+}
+
+Ray ray_past(const Sphere& s, const Approach& a) { return Ray(s.o + a.h * a.p - a.D * a.u, a.u); }
+
+// The closed-form roots of that ray.
+double near_root(const Sphere& s, const Approach& a) { return a.D - std::sqrt(s.r * s.r - a.h * a.h); }
+double far_root(const Sphere& s, const Approach& a) { return a.D + std::sqrt(s.r * s.r - a.h * a.h); }
+
+// The sphere and the ray as given (call before the ray's max_t changes).
+std::string context(const Sphere& s, const Ray& r) {
+  std::ostringstream os = stream15();
+  os << describe(s) << "\nray " << r;
+  return os.str();
+}
+
+DiffuseBSDF g_bsdf{Spectrum(0.5)};
+
+GRADED_TEST(SphereTest, RootsInOrder, "P1T4", 1, Visible) {
+  // Sphere ahead, sphere behind (both roots negative), origin inside (t1 < 0 < t2).
+  const Sphere spheres[] = {Sphere(Vec3(0, 0, -5), 1.0, &g_bsdf), Sphere(Vec3(1, 2, 3), 2.0, &g_bsdf),
+                            Sphere(Vec3(-4, 0.5, 1), 0.25, &g_bsdf)};
+  const Approach approaches[] = {approach(Vec3(0, 0, -1), 5.0, 0.0),          approach(Vec3(1, 2, -3), 4.0, 0.1),
+                                 approach(Vec3(-1, 0.5, 0.2), 10.0, 0.8, 2.0), approach(Vec3(0.3, -1, 0.1), -6.0, 0.5),
+                                 approach(Vec3(2, 1, 1), 0.1, 0.2, 4.0),       approach(Vec3(0, 1, 0), 0.0, 0.0)};
+  for (const Sphere& s : spheres)
+    for (Approach a : approaches) {
+      a.h *= s.r;  // keep every ray inside the sphere's radius
+      Ray r = ray_past(s, a);
+      const std::string ctx = context(s, r);
+      double t1 = -1e300, t2 = -1e300;
+      ASSERT_TRUE(s.test(r, t1, t2)) << "test() found no real roots; the ray passes " << a.h << " from the centre.\n"
+                                     << ctx;
+      ASSERT_LE(t1, t2) << "test() must return the roots in order, t1 <= t2.\n" << ctx;
+      EXPECT_TRUE(Near("t1", t1, near_root(s, a), kTol))
+          << "\nt1 is the smaller root, whatever the ray's t range (it may be negative).\n"
+          << ctx;
+      EXPECT_TRUE(Near("t2", t2, far_root(s, a), kTol)) << "\nt2 is the larger root.\n" << ctx;
+    }
+}
+
+GRADED_TEST(SphereTest, NoRealRootsReturnsFalse, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(1, -1, -3), 1.5, &g_bsdf);
+  for (double h : {1.0001, 1.1, 2.0, 10.0})
+    for (double D : {4.0, -4.0, 0.0}) {
+      Approach a = approach(Vec3(0.2, 0.1, -1), D, h * s.r);
+      Ray r = ray_past(s, a);
+      const std::string ctx = context(s, r);
+      double t1, t2;
+      EXPECT_FALSE(s.test(r, t1, t2)) << "test() found roots, but the ray passes " << a.h
+                                     << " from the centre, outside the radius.\n"
+                                     << ctx;
+      EXPECT_FALSE(s.has_intersection(r)) << "has_intersection hit.\n" << ctx;
+      Intersection isect;
+      EXPECT_FALSE(s.intersect(r, &isect)) << "intersect hit.\n" << ctx;
+      ASSERT_EQ(r.max_t, kInf) << "A miss must leave max_t alone.\n" << ctx;
+    }
+}
+
+GRADED_TEST(SphereTest, NonUnitDirection, "P1T4", 0.5, Visible) {
+  // t is measured in units of d: with d = k u the roots are (D -+ sqrt(r^2 - h^2)) / k.
+  Sphere s(Vec3(0.5, 1, -2), 0.75, &g_bsdf);
+  Approach a = approach(Vec3(1, -1, -2), 3.0, 0.3);
+  for (double k : {0.25, 3.0}) {
+    Ray r = ray_past(s, a);
+    r.d *= k;
+    const std::string ctx = context(s, r);
+    double t1 = 0, t2 = 0;
+    ASSERT_TRUE(s.test(r, t1, t2)) << "test() found no roots (|d| = " << k << ").\n" << ctx;
+    EXPECT_TRUE(Near("t1", t1, near_root(s, a) / k, kTol))
+        << "\n|d| = " << k << ": do not assume a unit direction (a = d.d).\n"
+        << ctx;
+    EXPECT_TRUE(Near("t2", t2, far_root(s, a) / k, kTol))
+        << "\n|d| = " << k << ": do not assume a unit direction (a = d.d).\n"
+        << ctx;
+  }
+}
+
+GRADED_TEST(SphereIntersect, NearRootFromOutside, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(1, 2, 3), 2.0, &g_bsdf);
+  for (const Approach& a : {approach(Vec3(0, 0, -1), 5.0, 0.0), approach(Vec3(1, 2, -3), 4.0, 1.9),
+                            approach(Vec3(-1, 0.5, 0.2), 10.0, 1.2, 2.0)}) {
+    Ray r = ray_past(s, a);
+    const std::string ctx = context(s, r);
+    ASSERT_TRUE(s.has_intersection(r)) << "has_intersection missed.\n" << ctx;
+    Intersection isect;
+    ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+    EXPECT_TRUE(Near("isect.t", isect.t, near_root(s, a), kTol))
+        << "\nFrom outside, the hit is the nearer root (the far one is " << far_root(s, a) << ").\n"
+        << ctx;
+  }
+}
+
+GRADED_TEST(SphereIntersect, TangentRayTouches, "P1T4", 0.5, Visible) {
+  // The ray grazes the sphere: a double root (discriminant exactly 0 with
+  // these numbers, in any formulation). It counts as a hit.
+  Sphere s(Vec3(2, 3, -4), 0.5, &g_bsdf);
+  Ray r(Vec3(-1, 3.5, -4), Vec3(1, 0, 0));
+  const std::string ctx = context(s, r);
+  double t1 = 0, t2 = 0;
+  ASSERT_TRUE(s.test(r, t1, t2)) << "test(): a tangent ray has one (double) real root; a zero discriminant is a "
+                                    "root.\n"
+                                 << ctx;
+  EXPECT_TRUE(Near("t1", t1, 3.0, kTol) && Near("t2", t2, 3.0, kTol))
+      << "t1 = " << t1 << ", t2 = " << t2 << ", expected 3 and 3\n"
+      << ctx;
+  Intersection isect;
+  ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed the tangent ray.\n" << ctx;
+  EXPECT_TRUE(Near("isect.t", isect.t, 3.0, kTol)) << "\n" << ctx;
+  EXPECT_TRUE(VecNear("isect.n", isect.n, Vec3(0, 1, 0), 1e-6)) << "\n" << ctx;
+}
+
+GRADED_TEST(SphereIntersect, OriginInsideHitsFarRoot, "P1T4", 0.5, Visible) {
+  // From inside, the near root is behind the origin (t1 < 0 <= min_t): the
+  // hit is the far root, and the normal still points outwards.
+  Sphere s(Vec3(-1, 0.5, 2), 1.5, &g_bsdf);
+  for (const Approach& a : {approach(Vec3(0, 0, -1), 0.0, 0.0), approach(Vec3(1, 2, -3), 0.5, 0.4),
+                            approach(Vec3(-1, 0.5, 0.2), -1.0, 0.2, 2.0)}) {
+    Ray r = ray_past(s, a);
+    const std::string ctx = context(s, r);
+    ASSERT_TRUE(s.has_intersection(r)) << "has_intersection missed from inside.\n" << ctx;
+    Intersection isect;
+    ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed from inside.\n" << ctx;
+    EXPECT_TRUE(Near("isect.t", isect.t, far_root(s, a), kTol)) << "\nFrom inside, the hit is the far root.\n" << ctx;
+    EXPECT_TRUE(VecNear("isect.n", isect.n, (r.at(far_root(s, a)) - s.o) / s.r, 1e-9))
+        << "\nThe normal points outwards, even when the sphere is hit from inside.\n"
+        << ctx;
+  }
+}
+
+GRADED_TEST(SphereIntersect, SphereBehindMisses, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(0, 0, 5), 1.0, &g_bsdf);
+  for (const Approach& a : {approach(Vec3(0, 0, -1), -5.0, 0.0), approach(Vec3(0.1, 0.2, -1), -3.0, 0.5)}) {
+    Ray r = ray_past(s, a);
+    const std::string ctx = context(s, r);
+    EXPECT_FALSE(s.has_intersection(r)) << "has_intersection hit a sphere behind the ray (both roots < 0).\n" << ctx;
+    Intersection isect;
+    EXPECT_FALSE(s.intersect(r, &isect)) << "intersect hit a sphere behind the ray (both roots < 0).\n" << ctx;
+    EXPECT_EQ(r.max_t, kInf) << "A miss must leave max_t alone.\n" << ctx;
+  }
+}
+
+GRADED_TEST(SphereIntersect, RespectsTRange, "P1T4", 0.5, Visible) {
+  // Roots 4 and 6; the hit is the nearest root inside [min_t, max_t].
+  Sphere s(Vec3(0, 0, -5), 1.0, &g_bsdf);
+  struct Range {
+    double min_t, max_t, t;  // t < 0: no hit
+  };
+  const Range ranges[] = {{0, kInf, 4},   {0, 5, 4},      {4.5, kInf, 6}, {4.5, 6.5, 6},
+                          {0, 3.9, -1}, {4.5, 5.5, -1}, {6.5, kInf, -1}};
+  for (const Range& rg : ranges) {
+    Ray r(Vec3(0.0), Vec3(0, 0, -1));
+    r.min_t = rg.min_t;
+    r.max_t = rg.max_t;
+    std::ostringstream why = stream15();
+    why << "Roots 4 and 6, t range [" << rg.min_t << ", " << rg.max_t << "]: ";
+    if (rg.t < 0) why << "no root in range, a miss.\n";
+    else why << "a hit at t = " << rg.t << ".\n";
+    why << context(s, r);
+    EXPECT_EQ(s.has_intersection(r), rg.t > 0) << "has_intersection. " << why.str();
+    Intersection isect;
+    bool hit = s.intersect(r, &isect);
+    EXPECT_EQ(hit, rg.t > 0) << "intersect. " << why.str();
+    if (hit && rg.t > 0) {
+      EXPECT_TRUE(Near("isect.t", isect.t, rg.t, kTol)) << "\n" << why.str();
+    }
+  }
+}
+
+GRADED_TEST(SphereIntersect, KeepsNearerHit, "P1T4", 0.5, Visible) {
+  // Two spheres on one ray, hit at t = 2 (near) and t = 9 (far).
+  Sphere near(Vec3(0, 0, -3), 1.0, &g_bsdf), far(Vec3(0, 0, -10), 1.0, &g_bsdf);
+  const Ray base(Vec3(0.0), Vec3(0, 0, -1));
+  std::ostringstream both = stream15();
+  both << "near " << describe(near) << " (t = 2)\nfar " << describe(far) << " (t = 9)\nray " << base;
+
+  Ray r = base;
+  Intersection isect;
+  ASSERT_TRUE(near.intersect(r, &isect)) << "intersect missed the near sphere.\n" << both.str();
+  EXPECT_TRUE(Near("r.max_t after the hit", r.max_t, 2.0, kTol))
+      << "\nOn a hit, intersect must set ray.max_t = t so that farther hits are rejected.\n"
+      << both.str();
+  EXPECT_FALSE(far.intersect(r, &isect)) << "After the near hit, the far sphere (t = 9 > r.max_t) must be rejected.\n"
+                                         << both.str();
+  EXPECT_EQ(isect.primitive, &near) << "A farther sphere replaced the nearer hit.\n" << both.str();
+
+  r = base;
+  isect = Intersection();
+  ASSERT_TRUE(far.intersect(r, &isect)) << "intersect missed the far sphere.\n" << both.str();
+  ASSERT_TRUE(near.intersect(r, &isect)) << "intersect missed the near sphere after the far one.\n" << both.str();
+  EXPECT_EQ(isect.primitive, &near) << "The nearer hit must replace the farther one.\n" << both.str();
+  EXPECT_TRUE(Near("isect.t", isect.t, 2.0, kTol)) << "\n" << both.str();
+}
+
+GRADED_TEST(SphereIntersect, OutwardUnitNormal, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(1, -2, 3), 2.5, &g_bsdf);
+  Rng rng(seed(0x5e1));
+  for (int k = 0; k < 50; ++k) {
+    Vec3 dir(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+    Approach a = approach(dir, 4.0 + 4.0 * rng.uniform(), 0.99 * s.r * rng.uniform(), 6.3 * rng.uniform());
+    Ray r = ray_past(s, a);
+    const std::string ctx = context(s, r);
+    Intersection isect;
+    ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+    Vec3 expected = (r.at(near_root(s, a)) - s.o) / s.r;
+    ASSERT_TRUE(VecNear("isect.n", isect.n, expected, 1e-9))
+        << "|isect.n| = " << glm::length(isect.n)
+        << "\nThe normal is the unit vector (hit point - centre) / radius, pointing out of the sphere.\n"
+        << ctx;
+  }
+}
+
+GRADED_TEST(SphereIntersect, RecordsPrimitiveAndBsdf, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(0, 0, -4), 1.0, &g_bsdf);
+  Ray r(Vec3(0.0), Vec3(0, 0, -1));
+  const std::string ctx = context(s, r);
+  Intersection isect;
+  ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+  EXPECT_EQ(isect.primitive, &s) << "isect.primitive must be the sphere hit (this).\n" << ctx;
+  EXPECT_EQ(isect.bsdf, s.get_bsdf()) << "isect.bsdf must be the sphere's get_bsdf().\n" << ctx;
+}
+
+GRADED_TEST(SphereIntersect, TinyAndHugeSpheres, "P1T4", 0.5, Hidden) {
+  // Scale: a sphere of radius 1e-3 seen from 1e3 away, and one of radius 1e4
+  // (seen from outside and from inside). A correct double-precision solution
+  // is accurate to about eps * D^2 / sqrt(r^2 - h^2): 5e-7 for the tiny sphere
+  // at h = 0.9 r, i.e. 5e-4 of its radius. The tolerance is 1% of the radius
+  // (the hit point is within r/100 of the exact one); float arithmetic or an
+  // absolute epsilon on the discriminant fails it.
+  struct Case {
+    Vec3 centre;
+    double r, D;
+    std::vector<double> hs;  // offsets, in radii
+    bool inside;
+  };
+  const Case cases[] = {
+      {glm::normalize(Vec3(1, 2, -3)) * 1e3, 1e-3, 1e3, {0.0, 0.5, 0.9}, false},
+      {glm::normalize(Vec3(-2, 1, 1)) * 3e4, 1e4, 3e4, {0.0, 0.5, 0.99}, false},
+      {Vec3(2e4, -1e4, 5e3), 1e4, 3e3, {0.0, 0.3}, true},  // origin inside, about 3e3 from the centre
+  };
+  for (const Case& c : cases) {
+    Sphere s(c.centre, c.r, &g_bsdf);
+    for (double h : c.hs) {
+      Approach a = approach(Vec3(0.3, -0.2, 1.0), c.D, h * c.r);
+      Ray r = ray_past(s, a);
+      const std::string ctx = context(s, r);
+      double expected = c.inside ? far_root(s, a) : near_root(s, a);
+      Intersection isect;
+      ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+      ASSERT_TRUE(Near("isect.t", isect.t, expected, 1e-2 * c.r)) << "\nThe tolerance is 1% of the radius.\n" << ctx;
+      // Passing 1.5 radii from the centre misses.
+      Approach miss = a;
+      miss.h = 1.5 * c.r;
+      Ray rm = ray_past(s, miss);
+      if (!c.inside) {
+        EXPECT_FALSE(s.has_intersection(rm)) << "has_intersection hit a ray passing 1.5 r from the centre.\n"
+                                             << context(s, rm);
+      }
+    }
+  }
+}
+
+// A random sphere and a ray aimed near it (about half the rays hit), with a
+// random non-unit direction and sometimes a random t range.
+struct RandomCase {
+  Sphere sphere;
+  Ray ray;
+};
+RandomCase random_case(Rng& rng, bool random_range) {
+  auto u = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+  auto v = [&](double lo, double hi) { return Vec3(u(lo, hi), u(lo, hi), u(lo, hi)); };
+  Sphere s(v(-2, 2), u(0.1, 2.0), &g_bsdf);
+  Vec3 o = rng.uniform() < 0.2 ? s.o + v(-0.5, 0.5) * s.r : v(-6, 6);
+  Vec3 target = s.o + v(-1.5, 1.5) * s.r;
+  Ray r(o, (target - o) * u(0.2, 3.0));
+  if (random_range) {
+    r.min_t = u(0.0, 1.0);
+    r.max_t = u(0.5, 2.0);
+  }
+  return {s, r};
+}
+
+GRADED_TEST(SphereIntersect, HasIntersectionAgreesWithIntersect, "P1T4", 0.5, Visible) {
+  Rng rng(seed(0x5e2));
+  for (int k = 0; k < 2000; ++k) {
+    RandomCase c = random_case(rng, k % 2 == 1);
+    Ray r1 = c.ray, r2 = c.ray;
+    Intersection isect;
+    bool any = c.sphere.has_intersection(r1);
+    ASSERT_EQ(any, c.sphere.intersect(r2, &isect))
+        << "has_intersection and intersect disagree (random ray " << k << ").\n"
+        << context(c.sphere, c.ray);
+  }
+}
+
+GRADED_TEST(SphereIntersect, RandomRaysMatchClosedForm, "P1T4", 1, Hidden) {
+  // Roots from the closest approach (support/part1_builders.h); cases within
+  // 1e-4 r of tangency or 1e-6 of the t range's ends are skipped.
+  Rng rng(seed(0x5e3));
+  int checked = 0;
+  for (int k = 0; k < 3000; ++k) {
+    RandomCase c = random_case(rng, k % 2 == 1);
+    const Sphere& s = c.sphere;
+    const Ray& r = c.ray;
+    Roots roots = closest_approach_roots(r.o, r.d, s.o, s.r);
+    bool near_boundary = std::abs(roots.h - s.r) < 1e-4 * s.r;
+    for (double t : {roots.t1, roots.t2})
+      near_boundary = near_boundary || (roots.real && std::min(std::abs(t - r.min_t), std::abs(t - r.max_t)) < 1e-6);
+    if (near_boundary) continue;
+    ++checked;
+    double t_hit = -1;
+    if (roots.real) {
+      if (roots.t1 >= r.min_t && roots.t1 <= r.max_t) t_hit = roots.t1;
+      else if (roots.t2 >= r.min_t && roots.t2 <= r.max_t) t_hit = roots.t2;
+    }
+    bool expected = t_hit >= 0;
+    std::ostringstream why = stream15();
+    if (roots.real) why << "Roots " << roots.t1 << " and " << roots.t2;
+    else why << "No real roots (the line passes " << roots.h << " from the centre)";
+    why << (expected ? ": a hit.\n" : ": a miss.\n") << context(s, r);
+    double t1 = 0, t2 = 0;
+    ASSERT_EQ(s.test(r, t1, t2), roots.real) << "test(). " << why.str();
+    if (roots.real) {
+      ASSERT_TRUE(Near("t1", t1, roots.t1, 1e-7 * std::max(1.0, std::abs(roots.t1)))) << "\n" << why.str();
+      ASSERT_TRUE(Near("t2", t2, roots.t2, 1e-7 * std::max(1.0, std::abs(roots.t2)))) << "\n" << why.str();
+    }
+    Ray r1 = r, r2 = r;
+    ASSERT_EQ(s.has_intersection(r1), expected) << "has_intersection. " << why.str();
+    Intersection isect;
+    ASSERT_EQ(s.intersect(r2, &isect), expected) << "intersect. " << why.str();
+    if (expected) {
+      ASSERT_TRUE(Near("isect.t", isect.t, t_hit, 1e-7 * std::max(1.0, t_hit))) << "\n" << why.str();
+      ASSERT_TRUE(VecNear("isect.n", isect.n, (r.at(t_hit) - s.o) / s.r, 1e-6)) << "\n" << why.str();
+    }
+  }
+  EXPECT_GT(checked, 2500) << "too many random cases were skipped; the test itself is broken";
+}
+
+}  // namespace
+}  // namespace pt::test::p1
