@@ -94,7 +94,7 @@ bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
     double inv = 1.0 / r.d[a];  // +-inf for axis-parallel rays: slabs become all-or-nothing
     double t_near = (min[a] - r.o[a]) * inv;
     double t_far = (max[a] - r.o[a]) * inv;
-    if (t_near > t_far) std::swap(t_near, t_far);
+    if (inv < 0.0) std::swap(t_near, t_far);  // by the sign of inv, which a NaN t cannot confuse (d = -0.0)
     // 0 * inf = NaN when the origin lies on a slab plane of a parallel ray;
     // these comparisons are false for NaN, so such a slab leaves [t0, t1] alone.
     if (t_near > t0) t0 = t_near;
