@@ -6,6 +6,8 @@
 #include <iostream>
 #include <thread>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "render/renderer.h"
@@ -17,17 +19,26 @@ namespace {
 
 std::string format_duration(double s) {
   char buf[32];
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
+  if (s < 10) std::snprintf(buf, sizeof buf, "%.2fs", s);
+  else if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
   else std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
   return buf;
 }
 
-// One progress line, rewritten in place on a terminal.
+// Progress: one line rewritten in place on a terminal (at most 5 times a
+// second); in a log, one line per 10%, so CI output stays readable.
 void print_progress(int done, int total, double seconds) {
+  static const bool tty = isatty(fileno(stderr));
+  static double last_print = -1.0;
+  static int last_decile = -1;
+  const int decile = 10 * done / total;
+  if (tty ? (seconds - last_print < 0.2 && done != total) : decile == last_decile) return;
+  last_print = seconds;
+  last_decile = decile;
   double eta = done > 0 ? seconds * (total - done) / done : 0.0;
-  std::fprintf(stderr, "\r[%3d%%] %d/%d tiles, %s elapsed, ETA %s   ", 100 * done / total, done, total,
-               format_duration(seconds).c_str(), format_duration(eta).c_str());
-  if (done == total) std::fprintf(stderr, "\n");
+  std::fprintf(stderr, "%s[%3d%%] %d/%d tiles, %s elapsed, ETA %s   %s", tty ? "\r" : "", 100 * done / total, done,
+               total, format_duration(seconds).c_str(), format_duration(eta).c_str(), tty ? "" : "\n");
+  if (tty && done == total) std::fprintf(stderr, "\n");
 }
 
 std::string stem_of(const std::string& path) {
