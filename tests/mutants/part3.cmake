@@ -1,0 +1,71 @@
+# Part 3 mutant gallery: plausible student bugs in reference/part3_direct_lighting.cpp.
+# Each must make at least one graded Part 3 test fail (the test that catches
+# each one is named in handouts/part3.md, "Known failure modes").
+#
+# Left out on purpose: taking ns_area_light samples of a delta light too. The
+# samples are all the same direction and value, so the average is identical:
+# not a bias and not a variance, only wasted shadow rays (a cost that the
+# benchmarks, not pass/fail tests, are for).
+set(ref reference/part3_direct_lighting.cpp)
+
+# ---- P3T1: DiffuseBSDF
+pt_mutant(3 missing_inv_pi ${ref} [[return reflectance * kInvPi;]] [[return reflectance;]])
+pt_mutant(3 sample_f_uniform_pdf ${ref}
+  [[*pdf = pdf_cosine_hemisphere(*wi);]] [[*pdf = pdf_uniform_hemisphere(*wi);]])
+pt_mutant(3 sample_f_uniform_directions ${ref}
+  [[*wi = sample_cosine_hemisphere(rng.uniform2());]] [[*wi = sample_uniform_hemisphere(rng.uniform2());]])
+pt_mutant(3 sample_f_returns_albedo ${ref} [[  return f(wo, *wi);]] [[  return reflectance;]])
+
+# ---- P3T2: zero_bounce_radiance
+pt_mutant(3 zero_bounce_wrong_side ${ref}
+  [[return isect.bsdf->get_emission(frame.to_local(-r.d));]] [[return isect.bsdf->get_emission(frame.to_local(r.d));]])
+
+# ---- P3T3: uniform hemisphere sampling
+pt_mutant(3 hemisphere_missing_cos ${ref}
+  [[L += isect.bsdf->f(w_out, w_in) * Li * w_in.z / pdf;]] [[L += isect.bsdf->f(w_out, w_in) * Li / pdf;]])
+pt_mutant(3 hemisphere_cosine_pdf ${ref}
+  [[double pdf = pdf_uniform_hemisphere(w_in);]] [[double pdf = pdf_cosine_hemisphere(w_in);]])
+pt_mutant(3 hemisphere_cosine_samples ${ref}
+  [[Vec3 w_in = sample_uniform_hemisphere(rng.uniform2());]] [[Vec3 w_in = sample_cosine_hemisphere(rng.uniform2());]])
+pt_mutant(3 hemisphere_samples_sphere ${ref}
+  [[Vec3 w_in = sample_uniform_hemisphere(rng.uniform2());]] [[Vec3 w_in = sample_uniform_sphere(rng.uniform2());]])
+pt_mutant(3 hemisphere_world_space_directions ${ref} [[Vec3 wi = frame.to_world(w_in);]] [[Vec3 wi = w_in;]])
+pt_mutant(3 hemisphere_counts_back_of_light ${ref}
+  [[light_isect.bsdf->get_emission(Frame::from_normal(light_isect.n).to_local(-wi))]]
+  [[light_isect.bsdf->get_emission(Vec3(0, 0, 1))]])
+pt_mutant(3 hemisphere_no_background ${ref} [[: scene->background(wi);]] [[: Spectrum(0.0);]])
+pt_mutant(3 hemisphere_no_epsilon ${ref}
+  [[    shadow.min_t = kRayEpsilon;
+    Intersection light_isect;]]
+  [[    Intersection light_isect;]])
+pt_mutant(3 hemisphere_not_divided_by_n ${ref} [[return L / double(n);]] [[return L;]])
+pt_mutant(3 hemisphere_one_sample ${ref}
+  [[const int n = std::max<int>(1, int(scene->lights.size()) * settings.ns_area_light);]] [[const int n = 1;]])
+
+# ---- P3T4: light sampling
+pt_mutant(3 importance_missing_cos ${ref}
+  [[L_light += isect.bsdf->f(w_out, w_in) * Li * w_in.z / pdf;]] [[L_light += isect.bsdf->f(w_out, w_in) * Li / pdf;]])
+pt_mutant(3 importance_pdf_twice ${ref}
+  [[L_light += isect.bsdf->f(w_out, w_in) * Li * w_in.z / pdf;]]
+  [[L_light += isect.bsdf->f(w_out, w_in) * Li * w_in.z / pdf / pdf;]])
+pt_mutant(3 importance_world_space_wi ${ref} [[Vec3 w_in = frame.to_local(wi);]] [[Vec3 w_in = wi;]])
+pt_mutant(3 importance_no_horizon_check ${ref}
+  [[if (pdf <= 0.0 || w_in.z <= 0.0) continue;]] [[if (pdf <= 0.0) continue;]])
+pt_mutant(3 importance_no_pdf_check ${ref}
+  [[if (pdf <= 0.0 || w_in.z <= 0.0) continue;]] [[if (w_in.z <= 0.0) continue;]])
+pt_mutant(3 shadow_ray_unbounded ${ref} [[Ray shadow(hit_p, wi, dist - kRayEpsilon);]] [[Ray shadow(hit_p, wi);]])
+pt_mutant(3 shadow_ray_reaches_light ${ref}
+  [[Ray shadow(hit_p, wi, dist - kRayEpsilon);]] [[Ray shadow(hit_p, wi, dist);]])
+pt_mutant(3 importance_no_epsilon ${ref}
+  [[      shadow.min_t = kRayEpsilon;
+      if (scene->has_intersection(shadow)) continue;]]
+  [[      if (scene->has_intersection(shadow)) continue;]])
+pt_mutant(3 average_over_all_lights ${ref}
+  [[L += L_light / double(n);]] [[L += L_light / double(n * scene->lights.size());]])
+pt_mutant(3 importance_sum_not_average ${ref} [[L += L_light / double(n);]] [[L += L_light;]])
+pt_mutant(3 importance_one_sample ${ref}
+  [[const int n = light->is_delta_light() ? 1 : settings.ns_area_light;]] [[const int n = 1;]])
+
+# ---- P3T5: one_bounce_radiance
+pt_mutant(3 one_bounce_swapped ${ref}
+  [[return settings.direct_hemisphere_sample ?]] [[return !settings.direct_hemisphere_sample ?]])

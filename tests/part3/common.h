@@ -1,0 +1,94 @@
+#pragma once
+// Shared set-up of the Part 3 graded tests.
+//
+// Significance: every graded test may fail a correct solution with
+// probability below 1e-4 (DESIGN section 6). Each test spends
+// kAlphaTest = 1e-5 of it, split over its m statistical checks by Šidák
+// (stats::sidak_alpha(kAlphaTest, m)); the factor 10 to the budget absorbs
+// the error of the large-sample approximations (CLT, chi-square law, delta
+// method) that far in the tail. The checks are on means and variances of the
+// estimators' output distributions, which do not depend on the order in
+// which a solution draws its random numbers; nothing is compared with the
+// reference implementation's own output.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "core/rng.h"
+#include "render/pathtracer.h"
+#include "support/part3_closed_forms.h"
+#include "support/part3_scenes.h"
+#include "support/seed.h"
+#include "support/statistics.h"
+
+namespace pt::test::part3 {
+
+using test::parallelogram;
+using test::parallelogram_irradiance;
+using test::Polygon;
+using test::polygon_irradiance;
+
+constexpr double kAlphaTest = 1e-5;
+constexpr double kAlbedo = 0.8;  // grey receivers: the estimate's illuminance is its value in every channel
+
+inline double alpha_each(int checks) { return stats::sidak_alpha(kAlphaTest, checks); }
+
+// A receiver at p (normal n) in a scene, and the ray that hits it.
+struct Lit {
+  Scene scene;
+  Vec3 p, n;
+  Aim aim;
+};
+
+// Builds the scene made by `add` (lights, occluders), adds the receiver at
+// (p, n), builds the BVH and aims at the receiver.
+inline Lit make_lit(const Vec3& p, const Vec3& n, const std::function<void(Scene&)>& add) {
+  Lit l;
+  l.p = p;
+  l.n = glm::normalize(n);
+  add(l.scene);
+  add_receiver(l.scene, p, l.n, Spectrum(kAlbedo));
+  l.scene.build();
+  l.aim = aim_at(l.scene, p, l.n);
+  return l;
+}
+
+enum class Method { Hemisphere, Importance, OneBounce };
+
+inline const char* name(Method m) {
+  return m == Method::Hemisphere ? "estimate_direct_lighting_hemisphere"
+         : m == Method::Importance ? "estimate_direct_lighting_importance"
+                                   : "one_bounce_radiance";
+}
+
+inline Spectrum estimate(const PathTracer& t, const Aim& a, Method m, Rng& rng) {
+  switch (m) {
+    case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(a.ray, a.isect, rng);
+    case Method::Importance: return t.estimate_direct_lighting_importance(a.ray, a.isect, rng);
+    default: return t.one_bounce_radiance(a.ray, a.isect, rng);
+  }
+}
+
+inline RenderSettings settings_with(int ns_area_light, bool hemisphere = false) {
+  RenderSettings s;
+  s.ns_area_light = ns_area_light;
+  s.direct_hemisphere_sample = hemisphere;
+  s.max_ray_depth = 1;
+  return s;
+}
+
+// n estimates (each of settings.ns_area_light samples per light) of the
+// outgoing radiance at the receiver, as scalars (illuminance of a grey value).
+inline stats::RunningStats run(const Lit& lit, Method m, const RenderSettings& s, int n, uint64_t seed) {
+  PathTracer tracer(lit.scene, s);
+  Rng rng(seed);
+  stats::RunningStats st;
+  for (int i = 0; i < n; ++i) st.add(illuminance(estimate(tracer, lit.aim, m, rng)));
+  return st;
+}
+
+// Outgoing radiance of the Lambertian receiver under irradiance E.
+inline double lambert_out(double irradiance) { return kAlbedo * kInvPi * irradiance; }
+
+}  // namespace pt::test::part3
