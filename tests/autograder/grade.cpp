@@ -35,6 +35,9 @@ using pt::grade::Exit;
 
 struct Limits {
   double binary = 600, test = 60;
+  // Stop a binary at its first failing test (check-mutant only needs one):
+  // keeps the mutant gallery's CI time proportional to the catch, not the suite.
+  bool fail_fast = false;
 };
 
 struct GradedTest {
@@ -211,8 +214,23 @@ BinaryReport grade_binary(const std::string& binary, const Limits& limits) {
   if (rep.tests.empty()) return rep;
 
   std::clog << "pt-grade: running " << binary << " (" << rep.tests.size() << " graded tests)\n";
-  rep.full = run_logged({binary, "--pt_results=" + results.path()}, rep.log, rep.log, limits.binary);
+  std::vector<std::string> args = {binary, "--pt_results=" + results.path()};
+  if (limits.fail_fast) args.push_back("--gtest_fail_fast");
+  rep.full = run_logged(args, rep.log, rep.log, limits.binary);
   const auto found = read_results(results.path());
+  if (limits.fail_fast) {
+    bool any_failed = false;
+    for (const auto& t : rep.tests)
+      if (auto it = found.find(t.name); it != found.end() && !get_bool(it->second, "passed") &&
+          !get_bool(it->second, "skipped"))
+        any_failed = true;
+    if (any_failed) {
+      for (auto& t : rep.tests)
+        if (auto it = found.find(t.name); it != found.end()) record(t, it->second);
+        else t.skipped = true;
+      return rep;
+    }
+  }
   size_t missing = 0;
   for (const auto& t : rep.tests) missing += found.count(t.name) == 0;
   if (missing > 0)
@@ -485,6 +503,7 @@ int main(int argc, char** argv) {
   CLI::App* mutant_cmd = app.add_subcommand("check-mutant", "at least one graded test must fail");
   mutant_cmd->add_option("BINARY", binary, "test binary built with a mutant")->required()->check(CLI::ExistingFile);
   add_limits(mutant_cmd);
+  mutant_cmd->add_flag("--fail-fast", limits.fail_fast, "stop at the first failing test (lists only that one)");
 
   // `run` is the default: insert it when the first argument is an option.
   std::vector<char*> args(argv, argv + argc);
