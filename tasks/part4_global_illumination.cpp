@@ -17,7 +17,7 @@ Spectrum PathTracer::at_least_one_bounce_radiance(const Ray& r, const Intersecti
 
 Spectrum PathTracer::est_radiance_global_illumination(const Ray& r, Rng& rng) const {
   // TODO(P4T3): zero-bounce radiance of the first hit (or scene->background()
-  // if the ray escapes), plus at_least_one_bounce_radiance with
+  // if the ray escapes; either only while bounce 0 is kept), plus at_least_one_bounce_radiance with
   // depth = settings.max_ray_depth when that is at least 1. Without
   // accumulate_bounces, return only bounce number max_ray_depth.
   throw NotImplemented("P4T3 PathTracer::est_radiance_global_illumination");

@@ -1,0 +1,120 @@
+// max_ray_depth is a hard limit and every bounce it allows is taken (P4T1),
+// the first bounce even under Russian roulette (P4T2).
+//
+// The mirror chain (support/part4_scenes.h) makes each bounce observable
+// without noise: light reaches the eye only after exactly mirrors + 1
+// bounces, so with max_ray_depth <= mirrors the estimate is exactly 0 (a
+// path that goes one vertex too deep picks up the card's light), and with
+// max_ray_depth = mirrors + 1 it is exactly the card's radiance (every
+// mirror's weight f cos / pdf is exactly 1). No statistics are needed: each
+// check is an equality on every one of 200 estimates, which a correct
+// solution passes with probability 1 (whatever its random numbers: the
+// mirrors are deterministic, and the card's direct light from a point light
+// is exact), up to rounding (relative 1e-6 allowed).
+#include "common.h"
+#include "support/graded.h"
+
+namespace pt {
+namespace {
+
+using namespace test::part4;
+
+constexpr int kRepeats = 200;
+
+RenderSettings chain_settings(int max_depth, double p, bool accumulate) {
+  RenderSettings s;
+  s.max_ray_depth = max_depth;
+  s.rr_continue_prob = p;
+  s.accumulate_bounces = accumulate;
+  s.ns_area_light = 1;  // light sampling (the default): exact for the point light
+  return s;
+}
+
+// Every one of kRepeats estimates equals `expected` (to rounding).
+::testing::AssertionResult all_equal(const MirrorChain& chain, const RenderSettings& s, double expected,
+                                     uint64_t seed) {
+  PathTracer tracer(chain.scene, s);
+  Rng rng(seed);
+  int wrong = 0;
+  Spectrum first_wrong(0.0);
+  for (int i = 0; i < kRepeats; ++i) {
+    const Spectrum L = estimate_once(tracer, chain.first, Entry::AtLeastOneBounce, rng);
+    const bool ok = std::abs(L.r - expected) <= 1e-6 * expected + 1e-12 && L.r == L.g && L.g == L.b;
+    if (!ok && wrong++ == 0) first_wrong = L;
+  }
+  if (wrong == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "mirror chain of " << chain.mirrors << " mirrors (light reaches the eye after exactly "
+         << chain.mirrors + 1 << " bounces), " << describe(s) << ": " << wrong << " of " << kRepeats
+         << " estimates of at_least_one_bounce_radiance differ from " << expected << ", the first was " << first_wrong;
+}
+
+GRADED_TEST(MaxDepth, IsNeverExceededAndEveryBounceIsTaken, "P4T1", 2, Hidden) {
+  for (int mirrors = 1; mirrors <= 3; ++mirrors) {
+    const MirrorChain chain = make_mirror_chain(mirrors);
+    const double card = chain.card_radiance;
+    const uint64_t seed = test::seed(4400 + 10 * mirrors);
+    // One bounce short of the card: nothing, with or without Russian roulette.
+    EXPECT_TRUE(all_equal(chain, chain_settings(mirrors, 1.0, true), 0.0, seed))
+        << "max_ray_depth = " << mirrors << " must not reach bounce " << mirrors + 1;
+    EXPECT_TRUE(all_equal(chain, chain_settings(mirrors, 0.5, true), 0.0, seed + 1))
+        << "Russian roulette must not extend a path past max_ray_depth";
+    // Exactly deep enough: the card's light, through weights of exactly 1.
+    EXPECT_TRUE(all_equal(chain, chain_settings(mirrors + 1, 1.0, true), card, seed + 2))
+        << "max_ray_depth = " << mirrors + 1 << " must reach bounce " << mirrors + 1
+        << " (each mirror's weight f cos / pdf is exactly 1)";
+    // Bounce isolation: the card's light is bounce mirrors + 1 and no other.
+    EXPECT_TRUE(all_equal(chain, chain_settings(mirrors + 1, 1.0, false), card, seed + 3))
+        << "accumulate_bounces off: bounce " << mirrors + 1 << " alone is the card's light";
+    for (int k = 1; k <= mirrors; ++k)
+      EXPECT_TRUE(all_equal(chain, chain_settings(k, 1.0, false), 0.0, seed + 4 + k))
+          << "accumulate_bounces off: bounce " << k << " alone is dark";
+  }
+}
+
+GRADED_TEST(RussianRoulette, FirstBounceIsAlwaysTaken, "P4T2", 2, Visible) {
+  // With a continuation probability as small as 1e-3, the first indirect
+  // bounce (from the first hit) is still always taken when the depth allows:
+  // roulette starts with the second.
+  //
+  // (1) Mirror chain of one mirror, max_ray_depth 2: exactly the card's
+  // radiance in every estimate (a roulette on the first bounce would return
+  // 0 for 999 estimates in 1000 and 1000 times the radiance for the rest).
+  const MirrorChain chain = make_mirror_chain(1);
+  EXPECT_TRUE(all_equal(chain, chain_settings(2, 1e-3, true), chain.card_radiance, test::seed(4500)));
+  EXPECT_TRUE(all_equal(chain, chain_settings(2, 1e-3, false), chain.card_radiance, test::seed(4501)));
+
+  // (2) White furnace, a = 0.5, bounce 2 alone (max_ray_depth 2, accumulate
+  // off), p = 1e-3: every estimate is a times the direct light at vertex 2,
+  // and the mean is Le a^2 (t test at kAlphaTest, n = 20000, bounded
+  // estimator: bounce 2 alone lies in [0, 2 a^2 Le]). An estimate is 0 only
+  // by accident: a hemisphere sample exactly on the horizon (chance 2^-32), or
+  // vertex 2 within kRayEpsilon of an edge of the box, where a shadow ray
+  // starting kRayEpsilon along may begin beyond the neighbouring wall and
+  // escape. The strips within 1e-5 of the box's 12 edges have area
+  // 12 * 2 * 2e-5 = 4.8e-4, hit from vertex 1 with a density per unit area
+  // cos cos' / (pi d^2) below 0.4 (d >= 0.9 to every edge that vertex 1 sees
+  // at a non-grazing angle), so fewer than 2e-4 of the estimates are 0
+  // (about 4 of 20000; the reference showed 1 in 400000). A roulette on the
+  // first bounce makes 99.9% of them 0. The check allows 1% (200): a correct
+  // solution exceeds it with probability below 1e-100, the mutant by two
+  // orders of magnitude.
+  Scene furnace = make_white_furnace(0.5, kLe);
+  const Aim target = furnace_aim(furnace);
+  PathTracer tracer(furnace, furnace_settings(2, 1e-3, false));
+  Rng rng(test::seed(4502));
+  stats::RunningStats st;
+  int zeros = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double L = illuminance(estimate_once(tracer, target, Entry::AtLeastOneBounce, rng));
+    zeros += L == 0.0;
+    st.add(L);
+  }
+  EXPECT_LE(zeros, 200) << "estimates of bounce 2 alone that were exactly 0, out of 20000, with rr_continue_prob = "
+                           "1e-3: the first bounce must not be subject to Russian roulette";
+  EXPECT_TRUE(stats::check(stats::t_test_mean(st, furnace_bounces(0.5, 2, 2), kAlphaTest,
+                                              "bounce 2 alone in the furnace (a = 0.5), rr_continue_prob = 1e-3")));
+}
+
+}  // namespace
+}  // namespace pt
