@@ -56,13 +56,6 @@ bool Scene::has_intersection(const Ray& r) const {
   return bvh->has_intersection(r);
 }
 
-Spectrum Scene::background(const Vec3&) const {
-  Spectrum L(0.0);
-  for (const auto& l : lights)
-    if (auto* sky = dynamic_cast<const SkyLight*>(l.get())) L += sky->radiance;
-  return L;
-}
-
 size_t Scene::triangle_count() const {
   size_t n = 0;
   for (const auto& m : meshes) n += m->faces.size();

@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "geometry/bvh.h"
@@ -28,7 +29,10 @@ class Scene {
   template <class L, class... Args>
   const L* add_light(Args&&... args) {
     lights.push_back(std::make_unique<L>(std::forward<Args>(args)...));
-    return static_cast<const L*>(lights.back().get());
+    const L* light = static_cast<const L*>(lights.back().get());
+    // Summed here once, so that escaping rays need not search the lights.
+    if constexpr (std::is_base_of_v<SkyLight, L>) sky_radiance_ += light->radiance;
+    return light;
   }
   // Adds the mesh and one Triangle per face.
   const Mesh* add_mesh(Mesh mesh);
@@ -49,7 +53,7 @@ class Scene {
   bool has_intersection(const Ray& r) const;
 
   // Radiance arriving along a ray that leaves the scene (sky lights).
-  Spectrum background(const Vec3& dir) const;
+  Spectrum background(const Vec3& /*dir*/) const { return sky_radiance_; }
 
   size_t triangle_count() const;
   BBox bounds() const;
@@ -60,6 +64,9 @@ class Scene {
   std::vector<std::unique_ptr<Primitive>> primitives;
   std::vector<std::unique_ptr<Light>> lights;
   std::unique_ptr<BVHAccel> bvh;
+
+ private:
+  Spectrum sky_radiance_{0.0};  // sum of the SkyLights added with add_light
 };
 
 }  // namespace pt
