@@ -8,12 +8,19 @@ set(p2 reference/part2_bvh.cpp)
 # No min/max swap: every slab with a negative direction component comes out
 # reversed and the box is missed. Caught by BBoxSlab.HitsAndMisses (and every
 # brute-force comparison).
-pt_mutant(2 slab_no_swap ${p2} [[std::swap(t_near, t_far);]] [[(void)0;  // no swap]])
+pt_mutant(2 slab_no_swap ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);]] [[(void)0;  // no swap]])
+
+# Swaps when t_near > t_far instead of by the sign of the direction: with a
+# -0.0 component and the origin on a slab plane, one of them is NaN and the
+# comparison is false, so the infinities stay reversed. Caught by
+# BBoxSlab.NegativeZeroOnSlabPlane, BVHCorrectness.NegativeZeroComponentsOnGridLines.
+pt_mutant(2 slab_swap_by_t ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);]]
+          [[if (t_near > t_far) std::swap(t_near, t_far);]])
 
 # Strict comparison: t0 == t1 counts as a miss, so every box of zero thickness
 # (a flat mesh) is missed. Caught by BBoxSlab.FlatBoxes,
 # BVHCorrectness.ClosestHitMatchesLinearScanOnMeshes (flat grids).
-pt_mutant(2 slab_strict_flat ${p2} [[if (t0 > t1) return false;]] [[if (t0 >= t1) return false;]])
+pt_mutant(2 slab_strict_flat ${p2} [[return t0 <= t1;]] [[return t0 < t1;]])
 
 # std::max(t_near, t0) with the NaN first: 0 * inf = NaN (origin on a slab
 # plane, zero direction component) then poisons the interval. Caught by
@@ -23,11 +30,14 @@ pt_mutant(2 slab_nan_poison ${p2} [[    if (t_near > t0) t0 = t_near;
     t1 = std::min(t_far, t1);]])
 
 # Works on copies of t0 and t1: the right answer, but the caller's interval
-# is never narrowed (so the traversal cannot order children by entry).
-# Caught by BBoxSlab.NarrowsInterval (and the traversal work test).
-pt_mutant(2 slab_not_narrowed ${p2} [[bool BBox::intersect(const Ray& r, double& t0, double& t1) const {]]
-          [[bool BBox::intersect(const Ray& r, double& t0_out, double& t1_out) const {
-  double t0 = t0_out, t1 = t1_out;  // the caller's [t0, t1] is never written]])
+# is never narrowed (so a traversal could not order children by entry).
+# Caught by every BBoxSlab test that checks the narrowed interval on a hit.
+pt_mutant(2 slab_not_narrowed ${p2}
+          [[bool BBox::intersect(const Ray& r, double& t0, double& t1) const { return slab_test(*this, r.o, 1.0 / r.d, t0, t1); }]]
+          [[bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
+  double a = t0, b = t1;  // the caller's [t0, t1] is never written
+  return slab_test(*this, r.o, 1.0 / r.d, a, b);
+}]])
 
 # Starts from the first slab instead of the incoming [t0, t1]: boxes behind
 # the origin or beyond max_t count as hits. Caught by BBoxSlab.HitsAndMisses
@@ -40,127 +50,144 @@ pt_mutant(2 slab_ignores_interval ${p2} [[    if (t_near > t0) t0 = t_near;
 
 # The node's box misses the last primitive of its range. Caught by
 # BVHStructure.InvariantsOnSoup (box not tight), brute-force comparisons.
-pt_mutant(2 bbox_misses_last ${p2} [[node->bb.expand(b);]] [[if (it + 1 != end) node->bb.expand(b);]])
+pt_mutant(2 bbox_misses_last ${p2} [[node->bb.expand(prims_[i].box);]]
+          [[if (i + 1 != end) node->bb.expand(prims_[i].box);]])
+
+# The node's box is the box of the centroids, not of the primitives. Caught by
+# BVHStructure.InvariantsOnSoup (a primitive sticks out of its leaf's box),
+# brute-force comparisons.
+pt_mutant(2 bbox_of_centroids ${p2} [[node->bb.expand(prims_[i].box);]] [[node->bb.expand(prims_[i].centroid);]])
 
 # The node stores a count where an index belongs. Caught by
 # BVHStructure.InvariantsOnSoup (ranges do not tile), brute force.
-pt_mutant(2 wrong_node_range ${p2} [[node->end = size_t(end - primitives_.begin());]]
-          [[node->end = size_t(end - start);]])
+pt_mutant(2 wrong_node_range ${p2} [[node->end = first_index_ + end;]] [[node->end = end - begin;]])
 
 # No fallback when no plane separates the centroids: a leaf of everything
 # (the bounded form of "a split that never terminates on equal centroids").
 # Caught by BVHDegenerate.AllCentroidsEqual (a leaf of 10,000 primitives).
-pt_mutant(2 no_fallback_leaf ${p2} [[    mid = start + count / 2;]]
-          [[    return node;  // cannot split: make a leaf of everything]])
+pt_mutant(2 no_fallback_leaf ${p2} [[      mid = begin + (end - begin) / 2;]]
+          [[      return;  // cannot split: make a leaf of everything]])
 
 # "Guarantees progress" by peeling one primitive off: terminates, but the
 # tree over 10,000 equal centroids is 10,000 levels deep. Caught by
 # BVHDegenerate.AllCentroidsEqual (depth bound).
-pt_mutant(2 fallback_peels_one ${p2} [[    mid = start + count / 2;]] [[    mid = start + 1;]])
+pt_mutant(2 fallback_peels_one ${p2} [[      mid = begin + (end - begin) / 2;]] [[      mid = begin + 1;]])
 
 # The classic single-axis split: the middle of the centroid box along its
 # longest axis, no cost model. Caught by BVHQuality.SahCostOnElongatedScene.
-pt_mutant(2 single_axis_midpoint ${p2} [[Split split = best_binned_split(start, end, centroids);]]
-          [[(void)&best_binned_split;  // no longer used
-  Split split;
-  split.axis = centroids.longest_axis();
-  split.position = centroids.centroid()[split.axis];]])
+pt_mutant(2 single_axis_midpoint ${p2} [[    Split split = best_split(begin, end, centroids, binning);]]
+          [[    Split split = best_split(begin, end, centroids, binning);  // only for the binning
+    split.axis = centroids.longest_axis();
+    split.last_left = kBins / 2 - 1;  // the middle of the centroid box
+    if (!(centroids.extent()[split.axis] > 0.0)) split.axis = -1;]])
 
 # Only the x axis is ever considered. Caught by BVHQuality.SahCostOnMesh (and
 # the other quality tests).
-pt_mutant(2 x_axis_only ${p2} [[for (int axis = 0; axis < 3; ++axis) {]] [[for (int axis = 0; axis < 1; ++axis) {]])
+pt_mutant(2 x_axis_only ${p2} [[    for (int a = 0; a < 3; ++a) {
+      if (!usable[a]) continue;
+      std::array<double, kBins> right_cost{};]] [[    for (int a = 0; a < 1; ++a) {
+      if (!usable[a]) continue;
+      std::array<double, kBins> right_cost{};]])
 
 # --- P2T3, traversal --------------------------------------------------------------
 
-# Returns the first hit found in a leaf rather than the closest of the leaf.
-# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
-pt_mutant(2 leaf_returns_first_hit ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
-          [[if (primitives_[i]->intersect(r, isect)) return true;]])
+# Stops testing a leaf at its first hit rather than finding the closest of
+# the leaf. Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
+pt_mutant(2 leaf_returns_first_hit ${p2} [[for (size_t i = node->start; i < node->end; ++i) hit |= primitives_[i]->intersect(r, isect);]]
+          [[for (size_t i = node->start; i < node->end; ++i) {
+        if (primitives_[i]->intersect(r, isect)) {
+          hit = true;
+          break;
+        }
+      }]])
 
-# Returns as soon as the nearer child reports a hit: but boxes overlap, and
-# the other child may hold a closer one. Caught by
+# `hit = ...` for `hit |= ...`: a miss later in the leaf forgets the hit
+# found before it (isect still holds it, but the query reports a miss).
+# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
+pt_mutant(2 leaf_hit_overwritten ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
+          [[hit = primitives_[i]->intersect(r, isect);]])
+
+# Returns at the first leaf with a hit: but boxes overlap, and a deferred
+# subtree may hold a closer one. Caught by
 # BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
-pt_mutant(2 returns_first_child_hit ${p2} [[  bool hit = intersect(r, isect, first);
-  if (tr0 <= r.max_t) hit |= intersect(r, isect, second);]] [[  if (intersect(r, isect, first)) return true;
-  bool hit = false;
-  if (tr0 <= r.max_t) hit |= intersect(r, isect, second);]])
+pt_mutant(2 returns_first_leaf_hit ${p2} [[      work.primitive_tests += node->size();]]
+          [[      work.primitive_tests += node->size();
+      if (hit) return true;  // the deferred subtrees are never looked at]])
 
 # Tests primitives against a copy of the ray: max_t never shrinks, so a later,
 # farther hit overwrites a nearer one (the traversal form of "forgetting to
 # shrink max_t"; Triangle::intersect does shrink the ray it is given).
 # Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
 pt_mutant(2 ray_copy_no_shrink ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
-          [[Ray copy = r;
-      hit |= primitives_[i]->intersect(copy, isect);]])
+          [[{
+        Ray copy = r;
+        hit |= primitives_[i]->intersect(copy, isect);
+      }]])
 
-# No pruning by max_t: every box along the ray is entered. Correct answers,
-# more work. Caught by BVHTraversal.NearerChildFirstAndPruned.
-pt_mutant(2 no_pruning ${p2} [[  double t0 = r.min_t, t1 = r.max_t;
-  if (!node->bb.intersect(r, t0, t1)) return false;
-  if (node->is_leaf()) {
-    bool hit = false;
-    for (size_t i = node->start; i < node->end; ++i) {
-      ++work_counters().primitive_tests;
-      hit |= primitives_[i]->intersect(r, isect);
+# No pruning by max_t: neither are children's boxes tested against the
+# closest hit found so far, nor are deferred subtrees dropped when the ray
+# enters them beyond it. (Either one alone still prunes: 1.00-1.06x the
+# work.) Correct answers, more work. Caught by
+# BVHTraversal.NearerChildFirstAndPruned.
+pt_mutant(2 no_pruning ${p2} [[      ChildrenEntered e = enter_children(*node, r, inv_d);
+      work.node_visits += 2;
+      if (e.count == 2) {
+        // The far child waits with its entry distance (or, past the stack's
+        // depth, is searched right away).
+        if (size < kStackSize) {
+          stack[size++] = {e.far, e.far_t0};
+        } else {
+          hit |= intersect(r, isect, e.far);
+        }
+      }
+      if (e.count > 0) {
+        node = e.near;
+        continue;
+      }
     }
-    return hit;
-  }
-  // Visit the child whose box the ray enters first; the far child is then
-  // often pruned because intersect() has shrunk r.max_t below its entry.
-  const BVHNode* first = node->l.get();
-  const BVHNode* second = node->r.get();
-  double tl0 = r.min_t, tl1 = r.max_t, tr0 = r.min_t, tr1 = r.max_t;
-  bool hit_l = first->bb.intersect(r, tl0, tl1);
-  bool hit_r = second->bb.intersect(r, tr0, tr1);
-  if (hit_l && hit_r && tr0 < tl0) {
-    std::swap(first, second);
-    std::swap(tl0, tr0);
-  } else if (!hit_l) {
-    if (!hit_r) return false;
-    return intersect(r, isect, second);
-  } else if (!hit_r) {
-    return intersect(r, isect, first);
-  }
-  bool hit = intersect(r, isect, first);
-  if (tr0 <= r.max_t) hit |= intersect(r, isect, second);]] [[  double t0 = r.min_t, t1 = kInf;  // the box test ignores the current max_t
-  if (!node->bb.intersect(r, t0, t1)) return false;
-  if (node->is_leaf()) {
-    bool hit = false;
-    for (size_t i = node->start; i < node->end; ++i) {
-      ++work_counters().primitive_tests;
-      hit |= primitives_[i]->intersect(r, isect);
+    // Resume with the latest deferred subtree that can still hold a nearer
+    // hit: one whose box the ray enters before the closest hit found so far.
+    while (size > 0 && stack[size - 1].t_enter > r.max_t) --size;]]
+          [[      Ray whole = r;
+      whole.max_t = kInf;  // boxes are tested against [min_t, inf)
+      ChildrenEntered e = enter_children(*node, whole, inv_d);
+      work.node_visits += 2;
+      if (e.count == 2) {
+        // The far child waits with its entry distance (or, past the stack's
+        // depth, is searched right away).
+        if (size < kStackSize) {
+          stack[size++] = {e.far, e.far_t0};
+        } else {
+          hit |= intersect(r, isect, e.far);
+        }
+      }
+      if (e.count > 0) {
+        node = e.near;
+        continue;
+      }
     }
-    return hit;
-  }
-  // Both children, nearer first, but neither is ever skipped for lying
-  // beyond the hit found so far.
-  const BVHNode* first = node->l.get();
-  const BVHNode* second = node->r.get();
-  double tl0 = r.min_t, tl1 = kInf, tr0 = r.min_t, tr1 = kInf;
-  bool hit_l = first->bb.intersect(r, tl0, tl1);
-  bool hit_r = second->bb.intersect(r, tr0, tr1);
-  if (hit_l && hit_r && tr0 < tl0) std::swap(first, second);
-  bool hit = intersect(r, isect, first);
-  hit |= intersect(r, isect, second);]])
+    // every deferred subtree is resumed, wherever the ray enters it]])
 
 # Visits the far child first (order reversed); pruning then rarely applies.
 # Caught by BVHTraversal.NearerChildFirstAndPruned.
-pt_mutant(2 far_child_first ${p2} [[if (hit_l && hit_r && tr0 < tl0) {]] [[if (hit_l && hit_r && tr0 > tl0) {]])
+pt_mutant(2 far_child_first ${p2} [[if (b_t0 < a_t0) e = {2, b, a, a_t0};]] [[if (b_t0 > a_t0) e = {2, b, a, a_t0};]])
 
 # Always the left child first, whatever the ray's direction. Caught by
 # BVHTraversal.NearerChildFirstAndPruned.
-pt_mutant(2 unordered_children ${p2} [[if (hit_l && hit_r && tr0 < tl0) {]] [[if (hit_l && hit_r && false) {]])
+pt_mutant(2 unordered_children ${p2} [[if (b_t0 < a_t0) e = {2, b, a, a_t0};]] [[if (false) e = {2, b, a, a_t0};]])
 
-# any-hit never looks in the second child. Caught by
+# any-hit never looks in the second child when the ray enters both. Caught by
 # BVHCorrectness.AnyHitAgreesWithLinearScan.
-pt_mutant(2 anyhit_ignores_second_child ${p2}
-          [[return has_intersection(r, node->l.get()) || has_intersection(r, node->r.get());]]
-          [[return has_intersection(r, node->l.get());]])
+pt_mutant(2 anyhit_ignores_second_child ${p2} [[stack[size++] = e.far;]] [[(void)e.far;  // never visited]])
 
-# any-hit searches both children even after a hit. Caught by
+# any-hit tests the whole leaf before it returns. Caught by
 # BVHTraversal.AnyHitStopsAtFirstHit.
-pt_mutant(2 anyhit_no_early_exit ${p2}
-          [[return has_intersection(r, node->l.get()) || has_intersection(r, node->r.get());]]
-          [[bool hit_l = has_intersection(r, node->l.get());
-  bool hit_r = has_intersection(r, node->r.get());
-  return hit_l || hit_r;]])
+pt_mutant(2 anyhit_no_early_exit ${p2} [[      for (size_t i = node->start; i < node->end; ++i) {
+        ++work.primitive_tests;
+        if (primitives_[i]->has_intersection(r)) return true;
+      }]] [[      bool found = false;
+      for (size_t i = node->start; i < node->end; ++i) {
+        ++work.primitive_tests;
+        found |= primitives_[i]->has_intersection(r);  // the whole leaf, even after a hit
+      }
+      if (found) return true;]])
