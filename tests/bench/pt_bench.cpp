@@ -25,6 +25,9 @@
 #ifdef PT_HAVE_EMBREE
 #include "embree_scene.h"
 #endif
+#ifdef PT_HAVE_LADDER
+#include "ladder.h"
+#endif
 
 namespace pt::bench {
 namespace {
@@ -47,6 +50,7 @@ struct Options {
   uint64_t seed = 2024;
   std::vector<std::string> queries;  // empty: all four
   int show_mismatches = 0;  // rays that disagree with Embree, printed to stderr
+  bool ladder = true;       // the steps from the reference towards Embree (ladder.h), when built
 };
 
 // --- Timing -------------------------------------------------------------------
@@ -143,6 +147,8 @@ struct QueryResult {
   bool have_embree = false;
   size_t embree_mismatches = 0;
   size_t count_mismatch_runs = 0;  // timed runs whose hit count differed from the checked pass
+  std::vector<Timing> steps;          // the ladder's steps, one thread
+  std::vector<size_t> step_mismatches;  // rays on which a step's answer differs from ours
 };
 
 struct BuildResult {
@@ -156,6 +162,9 @@ struct SceneResult {
   size_t triangles = 0, primitives = 0;
   double diag = 0;
   std::string embree_note;  // why Embree is missing, if it is
+  std::vector<std::string> step_names;
+  std::vector<double> step_bytes;
+  std::string step_note;  // why steps are missing, if they are
   BuildResult build;
   std::vector<QueryResult> queries;
 };
@@ -290,6 +299,15 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
   tree_stats(bvh->root(), &res.build);
   res.build.ours_bytes = double(res.build.nodes) * sizeof(BVHNode) + double(prims.size()) * sizeof(Primitive*);
 
+#ifdef PT_HAVE_LADDER
+  std::vector<std::unique_ptr<ladder::Step>> steps;
+  if (opt.ladder) steps = ladder::make_steps(*bvh, &res.step_note);
+  for (const auto& step : steps) {
+    res.step_names.push_back(step->name());
+    res.step_bytes.push_back(double(step->bytes()));
+  }
+#endif
+
   // Rays.
   const int img = opt.image;
   Camera cam = s.camera;
@@ -397,6 +415,29 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
     }
 #endif
 
+#ifdef PT_HAVE_LADDER
+    // Agreement of every step with ours: the same closest t to the bit (the
+    // steps test the same triangles with the same arithmetic), the same
+    // any-hit answers.
+    qr.steps.resize(steps.size());
+    qr.step_mismatches.assign(steps.size(), 0);
+    for (size_t k = 0; k < steps.size(); ++k) {
+      const bool exact = steps[k]->exact();
+      for (size_t i = 0; i < n; ++i) {
+        bool same;
+        if (!q.closest) {
+          same = steps[k]->any(rays[i]) == (ours_t[i] != kInf);
+        } else {
+          double t = steps[k]->closest(rays[i]), a = ours_t[i];
+          // Float steps: the tolerance of the Embree comparison.
+          same = exact ? t == a
+                       : (t == kInf) == (a == kInf) && (a == kInf || std::abs(t - a) <= 1e-5 * (res.diag + std::abs(a)));
+        }
+        qr.step_mismatches[k] += !same;
+      }
+    }
+#endif
+
     // Timed runs, interleaved so that a burst of machine load hits every
     // implementation alike.
     std::fprintf(stderr, "[%s] %s rays, %s hit: timing (%d runs)...\n", s.name.c_str(), q.rays, q.query, opt.reps);
@@ -417,6 +458,18 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
         double t = q.closest ? run_parallel(T, n, ours_closest, &count) : run_parallel(T, n, ours_any, &count);
         qr.ours.by_threads[ti].runs.push_back(t);
         qr.count_mismatch_runs += count != qr.hits;
+#ifdef PT_HAVE_LADDER
+        if (ti == 0) {  // the steps on the first thread count only
+          for (size_t k = 0; k < steps.size(); ++k) {
+            const ladder::Step& step = *steps[k];
+            auto closest = [&](size_t i) -> size_t { return step.closest(rays[i]) != kInf; };
+            auto any = [&](size_t i) -> size_t { return step.any(rays[i]); };
+            size_t step_count = 0;
+            double ts = q.closest ? run_parallel(T, n, closest, &step_count) : run_parallel(T, n, any, &step_count);
+            qr.steps[k].runs.push_back(ts);
+          }
+        }
+#endif
 #ifdef PT_HAVE_EMBREE
         if (emb_high) {
           for (int quality = 0; quality < 2; ++quality) {
@@ -517,6 +570,68 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
+std::vector<std::string> ladder_descriptions() {
+#ifdef PT_HAVE_LADDER
+  return ladder::step_descriptions();
+#else
+  return {};
+#endif
+}
+
+// "From the reference to Embree, one step at a time" (ladder.h): each step's
+// rays per second and, where Embree ran, its paired throughput ratio to Embree.
+void print_ladder(const std::vector<SceneResult>& results, const Options& opt, std::ostream& os) {
+  size_t most = 0;
+  for (const auto& r : results) most = std::max(most, r.step_names.size());
+  if (most == 0) return;
+  const std::vector<std::string>* names = nullptr;
+  for (const auto& r : results)
+    if (r.step_names.size() == most) names = &r.step_names;
+  const std::string t0 = std::to_string(opt.threads[0]) + "T";
+  os << "\n### From the reference to Embree, one step at a time (" << t0 << ")\n\n";
+  std::vector<std::string> h{"scene", "rays", "query", "reference"};
+  for (const auto& name : *names) h.push_back(name);
+  h.push_back("Embree high");
+  h.push_back("≠ reference");
+  Table lt(h);
+  for (const auto& r : results) {
+    for (const auto& q : r.queries) {
+      // Mrays/s, and the paired throughput ratio to Embree high where it ran.
+      auto cell = [&](const Timing& t) {
+        std::string c = mrays(q.n, t.pick(opt.median));
+        if (q.have_embree) c += " (" + ratio(paired_ratio(t, q.embree_high.by_threads[0])) + "×)";
+        return c;
+      };
+      std::vector<std::string> row{r.name, q.rays, q.query, cell(q.ours.by_threads[0])};
+      size_t bad = 0;
+      for (size_t k = 0; k < most; ++k) {
+        row.push_back(k < q.steps.size() ? cell(q.steps[k]) : "–");
+        if (k < q.step_mismatches.size()) bad += q.step_mismatches[k];
+      }
+      row.push_back(q.have_embree ? mrays(q.n, q.embree_high.by_threads[0].pick(opt.median)) + " (1×)" : "–");
+      row.push_back(group(bad));
+      lt.row(row);
+    }
+  }
+  lt.print(os);
+  os << "\nMillion rays per second (" << (opt.median ? "median" : "best")
+     << " run) and, in brackets, the throughput as a fraction of Embree high's (the median over runs of the ratio "
+        "of two runs measured back to back). Every step is built from the reference's own tree and adds one thing to "
+        "the step before it (tests/bench/ladder.h):\n";
+  for (const auto& d : ladder_descriptions()) os << "- " << d << "\n";
+  os << "\n≠ reference: rays on which a step's any-hit answer differs from the reference's, or its closest t "
+        "differs in any bit (the float step: by more than the tolerance of the Embree comparison below), summed over "
+        "the steps. Memory (nodes and copied primitives): ";
+  for (size_t i = 0; i < results.size(); ++i) {
+    const SceneResult& r = results[i];
+    os << (i ? "; " : "") << r.name << ": reference " << mb(r.build.ours_bytes);
+    for (size_t k = 0; k < r.step_names.size(); ++k) os << ", " << r.step_names[k] << " " << mb(r.step_bytes[k]);
+  }
+  os << ".\n";
+  for (const auto& r : results)
+    if (!r.step_note.empty()) os << r.name << ": " << r.step_note << "\n";
+}
+
 void print_report(const std::vector<SceneResult>& results, const Options& opt, const std::string& load_before,
                   const std::string& command, double total_seconds, double capacity_before) {
   std::ostream& os = std::cout;
@@ -590,6 +705,8 @@ void print_report(const std::vector<SceneResult>& results, const Options& opt, c
      << " runs of (Embree's time / ours) for runs measured back to back (robust to load bursts; the Mrays/s "
         "columns are each the "
      << pick << " run on its own).\n";
+
+  print_ladder(results, opt, os);
 
   // Work table.
   os << "\n### Work per ray, brute force, agreement\n\n";
@@ -689,6 +806,8 @@ int main(int argc, char** argv) {
                  "Rows to measure, comma-separated: camera-closest, camera-any, random-closest, shadow-any (default all; "
                  "handy under a profiler)");
   app.add_flag("--no-embree", [&](int64_t) { opt.embree = false; }, "Skip the Embree comparator");
+  app.add_flag("--no-ladder", [&](int64_t) { opt.ladder = false; },
+               "Skip the steps from the reference towards Embree (instructors' checkouts only)");
   app.add_option("--seed", opt.seed, "Seed of the random rays");
   app.add_option("--show-mismatches", opt.show_mismatches, "Print up to N rays per row on which ours and Embree disagree");
   CLI11_PARSE(app, argc, argv);
