@@ -7,7 +7,8 @@
 //    visited first; the farther one waits on a stack with its entry distance
 //    and is dropped without another test once a nearer hit is found. The
 //    recursive form (each child tests its own box again on entry, dividing
-//    three times per test) is 2-2.5x slower on the same tree.
+//    three times per test) measured 1.3 to 2.1 times slower on 0.2-1M
+//    triangle meshes, up to 4 times on small scenes.
 //  * The build computes every primitive's box and centroid once: get_bbox()
 //    is a virtual call that recomputes the box from the mesh's vertices, and
 //    a binned build would otherwise call it several times per level.
