@@ -596,11 +596,11 @@ void print_ladder(const std::vector<SceneResult>& results, const Options& opt, s
   Table lt(h);
   for (const auto& r : results) {
     for (const auto& q : r.queries) {
-      // Mrays/s, and the paired throughput ratio to Embree high where it ran.
+      // Mrays/s, and the paired throughput ratio to Embree high where it ran
+      // (to the reference otherwise).
+      const Timing& base = q.have_embree ? q.embree_high.by_threads[0] : q.ours.by_threads[0];
       auto cell = [&](const Timing& t) {
-        std::string c = mrays(q.n, t.pick(opt.median));
-        if (q.have_embree) c += " (" + ratio(paired_ratio(t, q.embree_high.by_threads[0])) + "×)";
-        return c;
+        return mrays(q.n, t.pick(opt.median)) + " (" + ratio(paired_ratio(t, base)) + "×)";
       };
       std::vector<std::string> row{r.name, q.rays, q.query, cell(q.ours.by_threads[0])};
       size_t bad = 0;
@@ -614,10 +614,13 @@ void print_ladder(const std::vector<SceneResult>& results, const Options& opt, s
     }
   }
   lt.print(os);
-  os << "\nMillion rays per second (" << (opt.median ? "median" : "best")
-     << " run) and, in brackets, the throughput as a fraction of Embree high's (the median over runs of the ratio "
-        "of two runs measured back to back). Every step is built from the reference's own tree and adds one thing to "
-        "the step before it (tests/bench/ladder.h):\n";
+  bool embree = false;
+  for (const auto& r : results)
+    for (const auto& q : r.queries) embree |= q.have_embree;
+  os << "\nMillion rays per second (" << (opt.median ? "median" : "best") << " run) and, in brackets, the throughput "
+     << (embree ? "as a fraction of Embree high's" : "relative to the reference's (Embree did not run)")
+     << " (the median over runs of the ratio of two runs measured back to back). Every step is built from the "
+        "reference's own tree and adds one thing to the step before it (tests/bench/ladder.h):\n";
   for (const auto& d : ladder_descriptions()) os << "- " << d << "\n";
   os << "\n≠ reference: rays on which a step's any-hit answer differs from the reference's, or its closest t "
         "differs in any bit (the float step: by more than the tolerance of the Embree comparison below), summed over "
