@@ -68,9 +68,11 @@ struct Bin {
 
 // Primitives whose centroid falls in bins [0, last_left] of `axis` go left.
 struct Split {
-  int axis = -1;
+  int axis = -1;  // -1: no plane separates the centroids
+  Binning binning;  // of `axis`
   int last_left = 0;
   double cost = kInf;  // area(L) x N_L + area(R) x N_R: the expected primitive tests, up to a constant
+  bool goes_left(const BuildPrim& p) const { return binning.bin(p.centroid[axis]) <= last_left; }
 };
 
 class Builder {
@@ -89,14 +91,11 @@ class Builder {
     node->end = first_index_ + end;
     if (end - begin <= max_leaf_size_) return;
 
-    Binning binning[3];
-    Split split = best_split(begin, end, centroids, binning);
+    Split split = best_split(begin, end, centroids);
     size_t mid = begin;
     if (split.axis >= 0) {
-      const Binning& b = binning[split.axis];
       auto first = prims_.begin();
-      mid = size_t(std::partition(first + begin, first + end,
-                                  [&](const BuildPrim& p) { return b.bin(p.centroid[split.axis]) <= split.last_left; }) -
+      mid = size_t(std::partition(first + begin, first + end, [&](const BuildPrim& p) { return split.goes_left(p); }) -
                    first);
     }
     if (mid == begin || mid == end) {
@@ -114,7 +113,8 @@ class Builder {
   // The cheapest of the kBins - 1 planes between bins on each axis: one pass
   // to fill the bins of all three axes, then per axis a sweep from the right
   // (cost of every right side) and one from the left.
-  Split best_split(size_t begin, size_t end, const BBox& centroids, Binning binning[3]) const {
+  Split best_split(size_t begin, size_t end, const BBox& centroids) const {
+    Binning binning[3];
     bool usable[3];
     for (int a = 0; a < 3; ++a) {
       double extent = centroids.max[a] - centroids.min[a];
@@ -151,7 +151,7 @@ class Builder {
         double cost = box.surface_area() * double(n) + right_cost[k + 1];
         // The lowest and highest centroids land in the first and last bins, so
         // both sides of every plane are non-empty; n checks it all the same.
-        if (n > 0 && n < end - begin && cost < best.cost) best = {a, k, cost};
+        if (n > 0 && n < end - begin && cost < best.cost) best = {a, binning[a], k, cost};
       }
     }
     return best;

@@ -191,18 +191,12 @@ Camera frame_points(const std::vector<Vec3>& points, const BBox& b, const Vec3& 
   return Camera(c + dist * dir, c, Vec3(0.0, 1.0, 0.0), vfov_deg, vfov_deg);
 }
 
-Camera frame_bounds(const BBox& b, const Vec3& from, double vfov_deg) {
-  std::vector<Vec3> corners;
-  for (int i = 0; i < 8; ++i) corners.emplace_back(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
-  return frame_points(corners, b, from, vfov_deg);
-}
-
 std::unique_ptr<BenchScene> mesh_scene(const std::string& name, const std::string& description, Mesh mesh) {
   auto s = std::make_unique<BenchScene>();
   s->name = name;
   s->description = description;
   const Mesh* m = s->scene.add_mesh(std::move(mesh));
-  s->camera = frame_points(m->positions, s->bounds());
+  s->scene.camera = frame_points(m->positions, s->bounds());
   return s;
 }
 
@@ -228,7 +222,6 @@ std::unique_ptr<BenchScene> load_bench_scene(const std::string& path_in) {
   s->description = path_in;
   s->scene = std::move(loaded.scene);
   s->scene.bvh.reset();  // callers build their own
-  s->camera = s->scene.camera;
   return s;
 }
 

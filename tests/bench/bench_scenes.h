@@ -29,12 +29,11 @@ Mesh make_bumpy_sphere(int n, double radius = 1.0);
 
 // --- Scenes -------------------------------------------------------------------
 // A benchmark scene: the pt::Scene owns meshes and primitives (its BVH is not
-// built here; callers build their own); the camera frames it.
+// built here; callers build their own) and a camera that frames it.
 struct BenchScene {
   std::string name;         // short, for tables
   std::string description;  // one line: where it comes from
   Scene scene;
-  Camera camera;
   std::vector<Primitive*> prims() const;
   size_t triangle_count() const { return scene.triangle_count(); }
   BBox bounds() const;  // union of the primitives' boxes
@@ -48,10 +47,9 @@ std::unique_ptr<BenchScene> mesh_scene(const std::string& name, const std::strin
 std::unique_ptr<BenchScene> load_bench_scene(const std::string& path);
 
 // A camera looking at the centre of `b` from direction `from`, as close as it
-// can be with every one of `points` (or the box's corners) inside a square image.
+// can be with every one of `points` inside a square image.
 Camera frame_points(const std::vector<Vec3>& points, const BBox& b, const Vec3& from = Vec3(0.3, 0.25, 1.0),
                     double vfov_deg = 40.0);
-Camera frame_bounds(const BBox& b, const Vec3& from = Vec3(0.3, 0.25, 1.0), double vfov_deg = 40.0);
 
 // Resolves a path relative to the repository (PT_SOURCE_DIR) when it does not
 // exist as given.

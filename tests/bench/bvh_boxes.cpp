@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
 
     if (!png_path.empty()) {
       const int W = res[0], H = res[1];
-      Camera cam = s->camera;
+      Camera cam = s->scene.camera;
       cam.set_aspect(double(W) / H);
       std::vector<Ray> rays = bench::camera_rays(cam, W, H);
       Image img(W, H);

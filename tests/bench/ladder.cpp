@@ -81,19 +81,25 @@ inline bool moller_trumbore(const LeafTriangle& tri, const Ray& r, double* t_hit
   return true;
 }
 
-// The primitives of a tree, in leaf order: pointers for the virtual calls of
-// steps 1 and 2, copied triangles for steps 3 and 4.
-struct Leaves {
-  std::vector<const Primitive*> prims;
-  std::vector<LeafTriangle> triangles;  // empty unless every primitive is a Triangle
+// Steps 3 to 5 copy triangles; they cannot take any other primitive.
+const Triangle& as_triangle(const Primitive* p) {
+  const auto* t = dynamic_cast<const Triangle*>(p);
+  if (!t) throw std::invalid_argument("a primitive other than a triangle");
+  return *t;
+}
 
-  explicit Leaves(const BVHAccel& bvh, bool copy_triangles) : prims(bvh.primitives().begin(), bvh.primitives().end()) {
+// The primitives of a tree, in leaf order: the BVH's own pointer array for
+// the virtual calls of steps 1 and 2, copied triangles for steps 3 and 4.
+struct Leaves {
+  const std::vector<Primitive*>& prims;  // the BVH's, which outlives every step
+  std::vector<LeafTriangle> triangles;   // empty unless copy_triangles
+
+  explicit Leaves(const BVHAccel& bvh, bool copy_triangles) : prims(bvh.primitives()) {
     if (!copy_triangles) return;
     triangles.reserve(prims.size());
     for (const Primitive* p : prims) {
-      const auto* t = dynamic_cast<const Triangle*>(p);
-      if (!t) throw std::invalid_argument("a primitive other than a triangle");
-      triangles.push_back({t->p1(), t->p2() - t->p1(), t->p3() - t->p1()});
+      const Triangle& t = as_triangle(p);
+      triangles.push_back({t.p1(), t.p2() - t.p1(), t.p3() - t.p1()});
     }
   }
 
@@ -459,18 +465,21 @@ struct alignas(16) TrianglePacket {
 // Step 5's leaves: each leaf's triangles in packets of four.
 class TrianglePackets {
  public:
-  explicit TrianglePackets(const BVHAccel& bvh) : triangles_(bvh, true) {}
+  explicit TrianglePackets(const BVHAccel& bvh) : prims_(bvh.primitives()) {
+    for (const Primitive* p : prims_) as_triangle(p);  // refuse other primitives before building anything
+  }
 
   LeafRef add_leaf(uint32_t start, uint32_t count) {
     LeafRef ref{uint32_t(packets_.size()), (count + 3) / 4};
     for (uint32_t i = 0; i < count; i += 4) {
       TrianglePacket p{};
       for (uint32_t lane = 0; lane < 4 && i + lane < count; ++lane) {
-        const LeafTriangle& t = triangles_.triangles[start + i + lane];
+        const Triangle& t = as_triangle(prims_[start + i + lane]);
+        Vec3 e1 = t.p2() - t.p1(), e2 = t.p3() - t.p1();
         for (int a = 0; a < 3; ++a) {
-          p.p1[a][lane] = float(t.p1[a]);
-          p.e1[a][lane] = float(t.e1[a]);
-          p.e2[a][lane] = float(t.e2[a]);
+          p.p1[a][lane] = float(t.p1()[a]);
+          p.e1[a][lane] = float(e1[a]);
+          p.e2[a][lane] = float(e2[a]);
         }
       }
       packets_.push_back(p);
@@ -553,7 +562,7 @@ class TrianglePackets {
     return _mm_movemask_ps(ok);
   }
 
-  Leaves triangles_;  // the copies the packets are made of
+  const std::vector<Primitive*>& prims_;  // the BVH's, in leaf order
   std::vector<TrianglePacket> packets_;
 };
 

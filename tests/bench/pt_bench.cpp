@@ -191,6 +191,14 @@ void tree_stats(const BVHNode* root, BuildResult* b) {
   }
 }
 
+// Whether two closest-hit answers agree to float precision (Embree and the
+// ladder's float step trace float copies of the vertices and rays): the same
+// hit or miss, and t within 1e-5 x (scene diagonal + t).
+bool agree_to_float_precision(double ours, double other, double diag) {
+  if ((ours == kInf) != (other == kInf)) return false;
+  return ours == kInf || std::abs(ours - other) <= 1e-5 * (diag + std::abs(ours));
+}
+
 // --- Brute force --------------------------------------------------------------------
 bool brute_closest(const std::vector<Primitive*>& prims, const Ray& r, Intersection* isect) {
   bool hit = false;
@@ -310,7 +318,7 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
 
   // Rays.
   const int img = opt.image;
-  Camera cam = s.camera;
+  Camera cam = s.scene.camera;
   cam.set_aspect(1.0);
   std::vector<Ray> cam_rays = camera_rays(cam, img, img);
   std::vector<Ray> rnd_rays = random_rays(bounds, opt.random, opt.seed, false);
@@ -387,15 +395,13 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
       qr.have_embree = true;
       frays = to_float(rays);
       // Agreement with Embree (high quality), one pass.
-      const double tol_abs = 1e-5 * res.diag;
       int shown = 0;
       for (size_t i = 0; i < n; ++i) {
         const FRay& f = frays[i];
         if (q.closest) {
-          float te = emb_high->intersect(f.o, f.d, f.tnear, f.tfar);
+          float te = emb_high->intersect(f.o, f.d, f.tnear, f.tfar);  // kMiss is +inf
           double a = ours_t[i];
-          bool hit_e = te != EmbreeScene::kMiss;
-          bool same = (a != kInf) == hit_e && (!hit_e || std::abs(a - te) <= tol_abs + 1e-5 * std::abs(a));
+          bool same = agree_to_float_precision(a, te, res.diag);
           qr.embree_mismatches += !same;
           if (!same && shown < opt.show_mismatches) {
             ++shown;
@@ -428,10 +434,8 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
         if (!q.closest) {
           same = steps[k]->any(rays[i]) == (ours_t[i] != kInf);
         } else {
-          double t = steps[k]->closest(rays[i]), a = ours_t[i];
-          // Float steps: the tolerance of the Embree comparison.
-          same = exact ? t == a
-                       : (t == kInf) == (a == kInf) && (a == kInf || std::abs(t - a) <= 1e-5 * (res.diag + std::abs(a)));
+          double t = steps[k]->closest(rays[i]);
+          same = exact ? t == ours_t[i] : agree_to_float_precision(ours_t[i], t, res.diag);
         }
         qr.step_mismatches[k] += !same;
       }

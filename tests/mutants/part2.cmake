@@ -75,11 +75,13 @@ pt_mutant(2 fallback_peels_one ${p2} [[      mid = begin + (end - begin) / 2;]] 
 
 # The classic single-axis split: the middle of the centroid box along its
 # longest axis, no cost model. Caught by BVHQuality.SahCostOnElongatedScene.
-pt_mutant(2 single_axis_midpoint ${p2} [[    Split split = best_split(begin, end, centroids, binning);]]
-          [[    Split split = best_split(begin, end, centroids, binning);  // only for the binning
+pt_mutant(2 single_axis_midpoint ${p2} [[    Split split = best_split(begin, end, centroids);]]
+          [[    Split split;
     split.axis = centroids.longest_axis();
+    double extent = centroids.extent()[split.axis];
+    split.binning = {centroids.min[split.axis], kBins / extent};
     split.last_left = kBins / 2 - 1;  // the middle of the centroid box
-    if (!(centroids.extent()[split.axis] > 0.0)) split.axis = -1;]])
+    if (!(extent > 0.0)) split.axis = -1;]])
 
 # Only the x axis is ever considered. Caught by BVHQuality.SahCostOnMesh (and
 # the other quality tests).
