@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <random>
 
 #include "core/rng.h"
 #include "core/sampling.h"

@@ -12,23 +12,11 @@
 #include "render/pathtracer.h"
 #include "support/graded.h"
 #include "support/part1_builders.h"
+#include "support/scripted_tracer.h"
 #include "support/seed.h"
 
 namespace pt::test::p1 {
 namespace {
-
-// A PathTracer whose radiance along a camera ray is scripted: the k-th call
-// (k = 0, 1, ...) returns radiance(k). Every ray is recorded.
-class ScriptedTracer : public PathTracer {
- public:
-  using PathTracer::PathTracer;
-  Spectrum est_radiance_global_illumination(const Ray& r, Rng&) const override {
-    rays.push_back(r);
-    return radiance(int(rays.size()) - 1);
-  }
-  std::function<Spectrum(int)> radiance = [](int) { return Spectrum(1.0); };
-  mutable std::vector<Ray> rays;
-};
 
 // An 8 x 6 image (not square, so that width and height cannot be mixed up)
 // seen by a camera that is not at the origin.
@@ -42,7 +30,7 @@ class PixelSampling : public ::testing::Test {
   }
   ScriptedTracer tracer(int ns_aa) {
     settings.ns_aa = ns_aa;
-    return ScriptedTracer(scene, settings);
+    return ScriptedTracer(scene, settings, constant(Spectrum(1.0)));
   }
   std::string where(int x, int y, int ns_aa) const {
     std::ostringstream os;
@@ -109,7 +97,7 @@ GRADED_TEST_F(PixelSampling, AveragesTheSamples, "P1T2", 0.5, Visible) {
   for (int ns : {1, 2, 5, 16}) {
     // Sample k has radiance (k+1, 2(k+1), 0.5): the mean is ((n+1)/2, n+1, 0.5).
     ScriptedTracer t = tracer(ns);
-    t.radiance = [](int k) { return Spectrum(k + 1.0, 2.0 * (k + 1.0), 0.5); };
+    t.script = {"sample k (from 0) = (k+1, 2(k+1), 0.5)", [](int k) { return Spectrum(k + 1.0, 2.0 * (k + 1.0), 0.5); }};
     Rng rng(seed(3));
     PixelEstimate e = t.raytrace_pixel(5, 0, rng);
     Vec3 expected((ns + 1) / 2.0, ns + 1.0, 0.5);

@@ -67,12 +67,15 @@ inline void expect_agrees_with_linear_scan(const CountedBVH& bvh, const std::vec
   EXPECT_GE(hits, int(rays.size()) / 10) << what << ": too few rays hit anything for this test to mean much";
 }
 
-// The structural invariants of bvh_checks.h, and the depth bound.
-inline void expect_valid_tree(const CountedBVH& bvh, const std::string& what) {
+// The structural invariants of bvh_checks.h, and the depth bound. Returns
+// whether the tree is within the depth bound, so that a test can stop before
+// it traverses a tree deep enough to overflow a recursive traversal.
+inline bool expect_valid_tree(const CountedBVH& bvh, const std::string& what) {
   StructureReport rep = bvh.structure();
   EXPECT_TRUE(rep.ok()) << what << " (max_leaf_size " << bvh.max_leaf_size() << "): " << rep.summary();
   EXPECT_LE(rep.max_depth, kMaxDepth) << what << ": the tree is " << rep.max_depth << " levels deep, more than "
                                       << kMaxDepth << ": " << rep.summary();
+  return rep.max_depth <= kMaxDepth;
 }
 
 }  // namespace pt::test::p2

@@ -16,21 +16,13 @@
 #include "core/vec.h"
 #include "render/pathtracer.h"
 #include "scene/scene.h"
+#include "support/scripted_tracer.h"
 
 namespace pt::test::part5 {
 
-// Sample i (counting from 0) of a pixel is value(i); text describes the
-// sequence in failure messages.
-struct Script {
-  std::string text;
-  std::function<Spectrum(int)> value;
-};
-
-inline Script constant(const Spectrum& c) {
-  std::ostringstream os;
-  os << "constant " << c << " (illuminance " << illuminance(c) << ")";
-  return {os.str(), [c](int) { return c; }};
-}
+using test::constant;
+using test::Script;
+using test::ScriptedTracer;
 
 // a, b, a, b, ...
 inline Script alternating(const Spectrum& a, const Spectrum& b) {
@@ -109,34 +101,14 @@ inline void expect_stops_at(const Script& s, int max_samples, int samples_per_ba
     ::pt::test::part5::expect_stops_at(__VA_ARGS__);           \
   } while (0)
 
-// A PathTracer whose radiance estimate is a script: the i-th call returns
-// value(i). It records the camera rays it is given.
-class ScriptedTracer : public PathTracer {
- public:
-  ScriptedTracer(const Scene& scene, const RenderSettings& s, Script script)
-      : PathTracer(scene, s), script(std::move(script)) {}
-
-  Spectrum est_radiance_global_illumination(const Ray& r, Rng&) const override {
-    if (calls >= settings.ns_aa + 1000)
-      throw std::runtime_error("est_radiance_global_illumination called " + std::to_string(calls) +
-                               " times with ns_aa=" + std::to_string(settings.ns_aa) +
-                               ": the pixel loop does not stop at ns_aa");
-    rays.push_back(r);
-    return script.value(calls++);
-  }
-
-  std::string describe(int x, int y) const {
-    std::ostringstream os;
-    os << "raytrace_pixel_adaptive(x=" << x << ", y=" << y << ") with width=" << settings.width
-       << ", height=" << settings.height << ", ns_aa=" << settings.ns_aa
-       << ", samples_per_batch=" << settings.samples_per_batch << ", max_tolerance=" << settings.max_tolerance
-       << ", radiance estimate = " << script.text;
-    return os.str();
-  }
-
-  Script script;
-  mutable int calls = 0;
-  mutable std::vector<Ray> rays;
-};
+// The call raytrace_pixel_adaptive(x, y) on a scripted tracer, for failure messages.
+inline std::string describe(const ScriptedTracer& t, int x, int y) {
+  const RenderSettings& s = t.settings;
+  std::ostringstream os;
+  os << "raytrace_pixel_adaptive(x=" << x << ", y=" << y << ") with width=" << s.width << ", height=" << s.height
+     << ", ns_aa=" << s.ns_aa << ", samples_per_batch=" << s.samples_per_batch
+     << ", max_tolerance=" << s.max_tolerance << ", radiance estimate = " << t.script.text;
+  return os.str();
+}
 
 }  // namespace pt::test::part5

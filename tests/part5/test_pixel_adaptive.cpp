@@ -19,6 +19,7 @@ namespace {
 
 using test::part5::alternating;
 using test::part5::constant;
+using test::part5::describe;
 using test::part5::ScriptedTracer;
 using test::part5::spectrum_near;
 
@@ -56,7 +57,7 @@ GRADED_TEST(PixelAdaptive, ConstantPixelStopsAfterOneBatch, "P5T1", 0.5, Visible
   ScriptedTracer tracer(scene, s, constant(c));
   Rng rng(test::seed(5100));
   PixelEstimate p = tracer.raytrace_pixel_adaptive(3, 2, rng);
-  std::string in = tracer.describe(3, 2);
+  std::string in = describe(tracer, 3, 2);
   EXPECT_EQ(tracer.calls, 16) << in << "\na constant pixel stops after one batch of settings.samples_per_batch = 16";
   EXPECT_EQ(p.num_samples, tracer.calls)
       << in << "\nnum_samples must record how many radiance samples the pixel took (" << tracer.calls << ")";
@@ -85,7 +86,7 @@ GRADED_TEST(PixelAdaptive, UsesTheSettingsAndNeverExceedsNsAa, "P5T1", 0.5, Visi
     ScriptedTracer tracer(scene, s, alternating(k.a, k.b));
     Rng rng(test::seed(5101));
     PixelEstimate p = tracer.raytrace_pixel_adaptive(5, 1, rng);
-    std::string in = tracer.describe(5, 1);
+    std::string in = describe(tracer, 5, 1);
     EXPECT_EQ(tracer.calls, k.expected) << in << "\n" << k.why;
     EXPECT_LE(tracer.calls, s.ns_aa) << in << "\nnever more than settings.ns_aa samples";
     EXPECT_EQ(p.num_samples, tracer.calls) << in << "\nnum_samples must record the samples taken";
@@ -112,7 +113,7 @@ GRADED_TEST(PixelAdaptive, RaysPassThroughThePixel, "P5T1", 1, Visible) {
     ScriptedTracer tracer(scene, s, alternating(Spectrum(1), Spectrum(0)));
     Rng rng = Rng::for_pixel(test::seed(5102), x, y);
     tracer.raytrace_pixel_adaptive(x, y, rng);
-    std::string in = tracer.describe(x, y);
+    std::string in = describe(tracer, x, y);
     ASSERT_EQ(int(tracer.rays.size()), 64) << in << "\nexpected all 64 samples (the rule is never met)";
     bool left = false, right = false, bottom = false, top = false;
     int outside = 0, off_camera = 0;
@@ -140,7 +141,7 @@ GRADED_TEST(PixelAdaptive, RaysPassThroughThePixel, "P5T1", 1, Visible) {
   ScriptedTracer tracer(scene, s, constant(Spectrum(0.5)));
   Rng rng = Rng::for_pixel(test::seed(5103), 5, 1);
   PixelEstimate p = tracer.raytrace_pixel_adaptive(5, 1, rng);
-  std::string in = tracer.describe(5, 1);
+  std::string in = describe(tracer, 5, 1);
   ASSERT_EQ(int(tracer.rays.size()), 1) << in << "\nns_aa = 1 allows one sample";
   EXPECT_EQ(p.num_samples, 1) << in;
   Vec2 q = pixel_position(scene.camera, s, tracer.rays[0]);

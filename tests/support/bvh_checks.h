@@ -223,7 +223,6 @@ class CountedBVH {
 
   const BVHAccel& bvh() const { return *bvh_; }
   const FlatTree& tree() const { return tree_; }
-  const std::vector<const Primitive*>& wrapped() const { return meter_.wrapped(); }
   size_t max_leaf_size() const { return max_leaf_size_; }
   StructureReport structure() const { return check_structure(tree_, meter_.wrapped(), max_leaf_size_); }
 

@@ -101,12 +101,6 @@ struct TriangleSet {
   }
 };
 
-inline std::unique_ptr<TriangleSet> one_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto s = std::make_unique<TriangleSet>();
-  s->add(a, b, c);
-  return s;
-}
-
 // Describes a triangle in failure messages.
 inline std::string describe(const Triangle& t) {
   std::ostringstream os = stream15();

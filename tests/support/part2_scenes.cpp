@@ -1,8 +1,6 @@
 #include "support/part2_scenes.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "core/rng.h"
 #include "core/sampling.h"
@@ -46,8 +44,13 @@ void Part2Scene::add_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   uint32_t i = uint32_t(soup_->positions.size());
   soup_->positions.insert(soup_->positions.end(), {a, b, c});
   soup_->faces.push_back({i, i + 1, i + 2});
+  // Soup vertices are not shared: each one's normal is its own triangle's,
+  // computed as Mesh::compute_vertex_normals would.
+  Vec3 n = glm::cross(b - a, c - a);
+  double len = glm::length(n);
+  n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
+  soup_->normals.insert(soup_->normals.end(), {n, n, n});
   prims_.push_back(std::make_unique<Triangle>(soup_, i, i + 1, i + 2));
-  dirty_ = true;
 }
 
 void Part2Scene::add_mesh(Mesh mesh) {
@@ -61,23 +64,7 @@ void Part2Scene::add_sphere(const Vec3& center, double radius) {
   prims_.push_back(std::make_unique<Sphere>(center, radius, nullptr));
 }
 
-void Part2Scene::append(Part2Scene&& other) {
-  other.finish();
-  if (other.soup_) soup_ = nullptr;  // keep our soup separate from theirs
-  for (auto& m : other.meshes_) meshes_.push_back(std::move(m));
-  for (auto& p : other.prims_) prims_.push_back(std::move(p));
-  other.meshes_.clear();
-  other.prims_.clear();
-  other.soup_ = nullptr;
-}
-
-void Part2Scene::finish() const {
-  if (dirty_ && soup_) soup_->compute_vertex_normals();
-  dirty_ = false;
-}
-
 std::vector<const Primitive*> Part2Scene::primitives() const {
-  finish();
   std::vector<const Primitive*> out;
   out.reserve(prims_.size());
   for (const auto& p : prims_) out.push_back(p.get());
@@ -153,38 +140,6 @@ Mesh make_flat_grid(int n, double size, double z0, double jitter, uint64_t seed)
     for (int i = 0; i < n; ++i) quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
   m.compute_vertex_normals();
   return m;
-}
-
-bool read_obj_mesh(const std::string& path, Mesh* mesh) {
-  std::ifstream in(path);
-  if (!in) return false;
-  Mesh m;
-  m.name = path;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    if (tag == "v") {
-      Vec3 p;
-      ls >> p.x >> p.y >> p.z;
-      m.positions.push_back(p);
-    } else if (tag == "f") {
-      std::vector<uint32_t> idx;
-      std::string item;
-      while (ls >> item) {
-        long i = std::stol(item.substr(0, item.find('/')));
-        idx.push_back(uint32_t(i > 0 ? i - 1 : long(m.positions.size()) + i));
-      }
-      for (size_t k = 2; k < idx.size(); ++k) m.faces.push_back({idx[0], idx[k - 1], idx[k]});
-    }
-  }
-  for (const auto& f : m.faces)
-    for (uint32_t i : f)
-      if (i >= m.positions.size()) return false;
-  m.compute_vertex_normals();
-  *mesh = std::move(m);
-  return !mesh->faces.empty();
 }
 
 Part2Scene make_soup(uint64_t seed, int triangles, int spheres) {

@@ -24,7 +24,6 @@ class Part2Scene {
   void add_triangle(const Vec3& a, const Vec3& b, const Vec3& c);
   void add_mesh(Mesh mesh);  // one Triangle per face
   void add_sphere(const Vec3& center, double radius);
-  void append(Part2Scene&& other);
 
   // The primitives in the order they were added (the linear scan's order).
   std::vector<const Primitive*> primitives() const;
@@ -33,10 +32,8 @@ class Part2Scene {
   std::string name;
 
  private:
-  void finish() const;
   std::vector<std::unique_ptr<Mesh>> meshes_;
   Mesh* soup_ = nullptr;
-  mutable bool dirty_ = false;
   std::vector<std::unique_ptr<Primitive>> prims_;
 };
 
@@ -51,11 +48,6 @@ Mesh make_uv_sphere(const Vec3& center, double radius, int nu, int nv);
 // [-size/2, size/2]^2; interior vertices jittered in x and y by up to
 // jitter x cell (z stays exactly z0, so every box is flat in z).
 Mesh make_flat_grid(int n, double size, double z0, double jitter, uint64_t seed);
-
-// Reads the vertices and faces (fans for polygons) of an OBJ file; false if
-// the file cannot be read. Used only by the ungraded calibration report, so
-// that no graded test depends on a mesh file.
-bool read_obj_mesh(const std::string& path, Mesh* mesh);
 
 // --- Scenes -----------------------------------------------------------------
 // `triangles` random triangles (edge lengths log-uniform in [0.05, 2], random

@@ -9,8 +9,11 @@
 #include "geometry/intersection.h"
 #include "scene/scene.h"
 #include "support/part3_closed_forms.h"
+#include "support/scene_builders.h"
 
 namespace pt::test::part3 {
+
+using test::Aim;  // support/scene_builders.h
 
 // Side of the receiver square: small enough to shadow nothing the tests
 // light it with (every light and occluder is at least 0.1 away from it).
@@ -33,11 +36,6 @@ inline const BSDF* add_receiver(Scene& s, const Vec3& p, const Vec3& n, const Sp
 // A ray and the intersection the estimators take: the ray starts 0.005 from
 // p on the front side (at 30 degrees from the normal) and hits the receiver
 // at p. The scene must be built.
-struct Aim {
-  Ray ray;
-  Intersection isect;
-};
-
 inline Aim aim_at(const Scene& s, const Vec3& p, const Vec3& n) {
   const Vec3 nn = glm::normalize(n);
   const Vec3 a = std::abs(nn.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);

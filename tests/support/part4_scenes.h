@@ -23,8 +23,11 @@
 #include "core/ray.h"
 #include "geometry/intersection.h"
 #include "scene/scene.h"
+#include "support/scene_builders.h"
 
 namespace pt::test::part4 {
+
+using test::Aim;  // support/scene_builders.h
 
 // ---------------------------------------------------------------------------
 // Path guard
@@ -110,16 +113,6 @@ inline const Wall (&furnace_walls())[6] {
   return walls;
 }
 
-enum class FurnaceWalls {
-  // Diffuse walls that emit, and no light list: direct light must be found
-  // by hemisphere sampling (settings.direct_hemisphere_sample), which here is
-  // a bounded estimator (0 <= f cos / pdf * Le <= 2 a Le).
-  EmittingDiffuse,
-  // The same walls, each also an AreaLight, so that light sampling works too
-  // (for renders; see the note on make_white_furnace about its variance).
-  AreaLights,
-};
-
 // The white furnace: a closed box, every wall Lambertian of albedo `albedo`
 // and emitting radiance `Le` inwards (one-sided). Every ray from inside hits
 // a wall's front, so the radiance along any ray inside is
@@ -128,18 +121,19 @@ enum class FurnaceWalls {
 // k-th vertex's direct light is a Le, and each of the k - 1 bounces before it
 // has weight f cos / pdf = (a / pi) cos / (cos / pi) = a exactly.
 //
-// The tests use EmittingDiffuse with hemisphere sampling. With light
-// sampling (AreaLights), a point near the edge where two walls meet samples
-// the other wall at distances r -> 0 with weight ~ cos cos' / r^2: the
-// estimator of bounce >= 2 has infinite variance (tail P(X > x) ~ x^-1.5),
-// its mean is still right but no t-test on it can promise a false-failure rate.
-inline Scene make_white_furnace(double albedo, double Le, FurnaceWalls kind = FurnaceWalls::EmittingDiffuse) {
+// The walls emit but are not in the light list: direct light must be found by
+// hemisphere sampling (settings.direct_hemisphere_sample), which here is a
+// bounded estimator (0 <= f cos / pdf * Le <= 2 a Le). Were the walls also
+// area lights, light sampling at a point near the edge where two walls meet
+// would sample the other wall at distances r -> 0 with weight ~ cos cos' /
+// r^2: the estimator of bounce >= 2 would have infinite variance (tail
+// P(X > x) ~ x^-1.5), its mean still right but no t-test on it able to
+// promise a false-failure rate.
+inline Scene make_white_furnace(double albedo, double Le) {
   Scene s;
   const BSDF* wall = s.add_bsdf<GuardedDiffuse>(Spectrum(albedo), Spectrum(Le));
   for (const Wall& w : furnace_walls()) {
     s.add_quad(w.c, w.ex, w.ey, wall);
-    if (kind == FurnaceWalls::AreaLights)
-      s.add_light<AreaLight>(Spectrum(Le), w.c, glm::normalize(glm::cross(w.ex, w.ey)), w.ex, w.ey);
   }
   s.camera = Camera({0.1, -0.2, 0.3}, {0.3, 0.0, -0.7}, {0, 1, 0}, 60.0, 60.0);
   s.build();
@@ -148,11 +142,6 @@ inline Scene make_white_furnace(double albedo, double Le, FurnaceWalls kind = Fu
 
 // A ray from inside the furnace (off-centre, in a general direction) and the
 // wall point it hits, well inside the back wall (away from every edge).
-struct Aim {
-  Ray ray;
-  Intersection isect;
-};
-
 inline Aim aim(const Scene& s, const Vec3& from, const Vec3& dir) {
   Aim a;
   a.ray = Ray(from, glm::normalize(dir));

@@ -4,6 +4,12 @@
 
 namespace pt::test {
 
+// A ray and what it hits: where an estimator is evaluated at a surface point.
+struct Aim {
+  Ray ray;
+  Intersection isect;
+};
+
 // A Cornell box: x in [-1, 1], y in [0, 2], z in [-1, 1], open at z = +1,
 // walls facing inwards (red left, blue right, white elsewhere), a 0.5 x 0.5
 // area light facing down just under the ceiling, two diffuse spheres. The

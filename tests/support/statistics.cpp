@@ -510,7 +510,7 @@ ChiSquareResult ChiSquare2D::run(const std::function<double(double, double)>& de
   if (!r.passed() || always) {
     r.report_dir = report_dir();
     try {
-      write_report(expected, r, x_label, y_label);
+      write_report(expected, r);
     } catch (const std::exception& e) {
       r.report_dir += std::string(" (could not write the report: ") + e.what() + ")";
     }
@@ -518,16 +518,15 @@ ChiSquareResult ChiSquare2D::run(const std::function<double(double, double)>& de
   return r;
 }
 
-void ChiSquare2D::write_report(const std::vector<double>& expected, const ChiSquareResult& r,
-                               const std::string& xl, const std::string& yl) const {
+void ChiSquare2D::write_report(const std::vector<double>& expected, const ChiSquareResult& r) const {
   namespace fs = std::filesystem;
   const fs::path dir = report_dir();
   fs::create_directories(dir);
   const int nx = grid_.nx, ny = grid_.ny;
   auto table = [&](const fs::path& file, const std::vector<double>& v, const char* title) {
     std::ofstream os(file);
-    os << "# " << title << " counts of '" << what_ << "': " << ny << " rows (" << yl << " from " << grid_.y1
-       << " at the top down to " << grid_.y0 << ") x " << nx << " columns (" << xl << " from " << grid_.x0
+    os << "# " << title << " counts of '" << what_ << "': " << ny << " rows (" << y_label << " from " << grid_.y1
+       << " at the top down to " << grid_.y0 << ") x " << nx << " columns (" << x_label << " from " << grid_.x0
        << " to " << grid_.x1 << ")\n";
     os << std::fixed << std::setprecision(1);
     for (int j = ny - 1; j >= 0; --j) {
@@ -567,8 +566,6 @@ void ChiSquare2D::write_report(const std::vector<double>& expected, const ChiSqu
 DirectionalChiSquare::DirectionalChiSquare(std::string what, const Vec3& axis, int n_cos, int n_phi, double cos_min,
                                            double cos_max)
     : frame_(Frame::from_normal(glm::normalize(axis))),
-      cos_min_(cos_min),
-      cos_max_(cos_max),
       hist_(std::move(what), Grid2D{n_phi, n_cos, 0.0, 2.0 * kPi, cos_min, cos_max}) {
   hist_.x_label = "phi";
   hist_.y_label = "cos theta";

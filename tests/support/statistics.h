@@ -257,9 +257,8 @@ class ChiSquare2D {
   // observed | expected | (observed - expected) / sqrt(expected)).
   std::string report_dir() const;
   // Writes the report now (run() does it on failure; tests may want it anyway).
-  void write_report(const std::vector<double>& expected, const ChiSquareResult& r,
-                    const std::string& x_label, const std::string& y_label) const;
-  std::string x_label = "x", y_label = "y";
+  void write_report(const std::vector<double>& expected, const ChiSquareResult& r) const;
+  std::string x_label = "x", y_label = "y";  // the axes, in the report's text
 
  private:
   std::string what_;
@@ -286,7 +285,6 @@ class DirectionalChiSquare {
 
  private:
   Frame frame_;
-  double cos_min_, cos_max_;
   ChiSquare2D hist_;
 };
 
