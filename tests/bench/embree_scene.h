@@ -48,18 +48,7 @@ class EmbreeScene {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;
-    rh.ray.org_x = o[0];
-    rh.ray.org_y = o[1];
-    rh.ray.org_z = o[2];
-    rh.ray.dir_x = d[0];
-    rh.ray.dir_y = d[1];
-    rh.ray.dir_z = d[2];
-    rh.ray.tnear = tnear;
-    rh.ray.tfar = tfar;
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    rh.ray = make_ray(o, d, tnear, tfar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &ctx, &rh);
@@ -68,6 +57,14 @@ class EmbreeScene {
   bool occluded(const float o[3], const float d[3], float tnear, float tfar) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
+    RTCRay r = make_ray(o, d, tnear, tfar);
+    rtcOccluded1(scene_, &ctx, &r);
+    return r.tfar < 0.0f;  // set to -inf on a hit
+  }
+  static constexpr float kMiss = __builtin_inff();
+
+ private:
+  static RTCRay make_ray(const float o[3], const float d[3], float tnear, float tfar) {
     RTCRay r;
     r.org_x = o[0];
     r.org_y = o[1];
@@ -81,12 +78,9 @@ class EmbreeScene {
     r.mask = 0xFFFFFFFFu;
     r.id = 0;
     r.flags = 0;
-    rtcOccluded1(scene_, &ctx, &r);
-    return r.tfar < 0.0f;  // set to -inf on a hit
+    return r;
   }
-  static constexpr float kMiss = __builtin_inff();
 
- private:
   RTCScene scene_ = nullptr;
 };
 

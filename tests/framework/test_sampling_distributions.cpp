@@ -213,20 +213,14 @@ TEST(ClosedForms, EdgeOccluderClipsTheLightAsRayTracingSays) {
     oc.occluder.add_to(s);
     s.build();
     const double closed = test::polygon_irradiance(oc.p, oc.n, oc.occluder.visible(oc.p, c, ex, ey), 1.0);
-    const int res = 800;
-    double sum = 0;
-    const Vec3 ln = glm::normalize(glm::cross(ex, ey));
-    for (int j = 0; j < res; ++j)
-      for (int i = 0; i < res; ++i) {
-        const Vec3 q = c + ((i + 0.5) / res - 0.5) * ex + ((j + 0.5) / res - 0.5) * ey;
-        const Vec3 d = q - oc.p;
-        const double r = glm::length(d);
-        Ray shadow(oc.p, d / r, r - 1e-6);
-        shadow.min_t = 1e-6;
-        if (s.has_intersection(shadow)) continue;
-        sum += std::max(0.0, glm::dot(oc.n, d / r)) * -glm::dot(ln, d / r) / (r * r);
-      }
-    const double brute = sum * glm::length(glm::cross(ex, ey)) / (res * res);
+    auto unshadowed = [&](const Vec3& q) {
+      const Vec3 d = q - oc.p;
+      const double r = glm::length(d);
+      Ray shadow(oc.p, d / r, r - 1e-6);
+      shadow.min_t = 1e-6;
+      return !s.has_intersection(shadow);
+    };
+    const double brute = test::parallelogram_irradiance_numerical(oc.p, oc.n, c, ex, ey, 1.0, 800, unshadowed);
     const double full = test::parallelogram_irradiance(oc.p, oc.n, c, ex, ey, 1.0);
     EXPECT_NEAR(closed, brute, 3e-3 * brute) << oc.name;  // O(1/res) from the shadow edge
     if (oc.blocks)

@@ -49,16 +49,23 @@ inline double furnace_bounces(double a, int k0, int k1, double Le = kLe) {
   return Le * sum;
 }
 
-// Settings of the furnace tests: hemisphere sampling for direct light (the
-// walls are not in the light list, see make_white_furnace), one sample.
-inline RenderSettings furnace_settings(int max_depth, double rr_continue_prob, bool accumulate = true) {
+// The settings the Part 4 tests vary. Each one is set here, defaults
+// included, so that a test's expected values do not move with the defaults.
+inline RenderSettings gi_settings(int max_depth, double rr_continue_prob, bool accumulate = true,
+                                  bool hemisphere = false) {
   RenderSettings s;
   s.max_ray_depth = max_depth;
   s.rr_continue_prob = rr_continue_prob;
   s.accumulate_bounces = accumulate;
-  s.direct_hemisphere_sample = true;
+  s.direct_hemisphere_sample = hemisphere;
   s.ns_area_light = 1;
   return s;
+}
+
+// Settings of the furnace tests: hemisphere sampling for direct light (the
+// walls are not in the light list, see make_white_furnace), one sample.
+inline RenderSettings furnace_settings(int max_depth, double rr_continue_prob, bool accumulate = true) {
+  return gi_settings(max_depth, rr_continue_prob, accumulate, true);
 }
 
 inline std::string describe(const RenderSettings& s) {

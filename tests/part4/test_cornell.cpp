@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
 #include <thread>
 
 #include "common.h"
@@ -47,19 +48,11 @@ const Region kRegions[] = {
     {"floor in front of the spheres", 0.45, 0.55, 0.05, 0.10},
     {"front of the right sphere", 0.68, 0.74, 0.18, 0.24},
 };
-constexpr int kRegionCount = sizeof(kRegions) / sizeof(kRegions[0]);
+constexpr int kRegionCount = int(std::size(kRegions));
 
 // The settings of the region test: the course's full global illumination,
 // light sampling, 5 bounces, Russian roulette at the default p = 0.7.
-RenderSettings cornell_settings() {
-  RenderSettings s;
-  s.max_ray_depth = 5;
-  s.ns_area_light = 1;
-  s.rr_continue_prob = 0.7;
-  s.accumulate_bounces = true;
-  s.direct_hemisphere_sample = false;
-  return s;
-}
+RenderSettings cornell_settings() { return gi_settings(5, 0.7); }
 
 // Mean radiance (RGB) of each region for cornell_settings(), computed ONCE by
 // an independent estimator (DISABLED_ComputeWithBsdfPaths below: pure BSDF
@@ -239,14 +232,6 @@ GRADED_TEST(CornellBox, RegionMeansMatchAnIndependentEstimate, "P4T3", 2, Hidden
     }
   }
 }
-
-}  // namespace
-}  // namespace pt
-
-namespace pt {
-namespace {
-
-using namespace test::part4;
 
 GRADED_TEST(BounceImages, SumToTheFullRender, "P4T3", 2, Visible) {
   // The renderer (render/renderer.h) makes the images of bounce k alone

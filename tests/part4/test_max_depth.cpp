@@ -21,14 +21,8 @@ using namespace test::part4;
 
 constexpr int kRepeats = 200;
 
-RenderSettings chain_settings(int max_depth, double p, bool accumulate) {
-  RenderSettings s;
-  s.max_ray_depth = max_depth;
-  s.rr_continue_prob = p;
-  s.accumulate_bounces = accumulate;
-  s.ns_area_light = 1;  // light sampling (the default): exact for the point light
-  return s;
-}
+// Light sampling: exact for the point light.
+RenderSettings chain_settings(int max_depth, double p, bool accumulate) { return gi_settings(max_depth, p, accumulate); }
 
 // Every one of kRepeats estimates equals `expected` (to rounding).
 ::testing::AssertionResult all_equal(const MirrorChain& chain, const RenderSettings& s, double expected,

@@ -28,14 +28,7 @@ Scene sky_over_floor() {
   return s;
 }
 
-RenderSettings sky_settings(int max_depth, bool accumulate) {
-  RenderSettings s;
-  s.max_ray_depth = max_depth;
-  s.accumulate_bounces = accumulate;
-  s.rr_continue_prob = 1.0;
-  s.ns_area_light = 1;
-  return s;
-}
+RenderSettings sky_settings(int max_depth, bool accumulate) { return gi_settings(max_depth, 1.0, accumulate); }
 
 GRADED_TEST(Sky, ReachesTheEyeOnlyAsBounceZero, "P4T3", 1, Visible) {
   // Deterministic: an upward camera ray hits nothing, and its estimate is

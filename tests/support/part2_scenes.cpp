@@ -238,15 +238,11 @@ Part2Scene make_layers(uint64_t seed, int layers) {
   Rng rng(seed, 18);
   Part2Scene s;
   s.name = std::to_string(layers) + " stacked sheets";
-  const int n = 16;
   for (int l = 0; l < layers; ++l) {
-    Mesh m;
+    Mesh m = make_flat_grid(16, 16.0, l, 0.0, 0);  // unit cells, centred, in the plane z = l
     m.name = "sheet";
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) m.positions.push_back(Vec3(i - 0.5 * n, j - 0.5 * n, l + 0.2 * (rng.uniform() - 0.5)));
-    auto id = [&](int i, int j) { return uint32_t(j * (n + 1) + i); };
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    for (Vec3& p : m.positions) p.z += 0.2 * (rng.uniform() - 0.5);
+    m.normals.clear();  // add_mesh recomputes them for the bumped sheet
     s.add_mesh(std::move(m));
   }
   return s;

@@ -57,7 +57,7 @@ double parallelogram_irradiance(const Vec3& p, const Vec3& n, const Vec3& c, con
 }
 
 double parallelogram_irradiance_numerical(const Vec3& p, const Vec3& n, const Vec3& c, const Vec3& ex, const Vec3& ey,
-                                          double radiance, int res) {
+                                          double radiance, int res, const std::function<bool(const Vec3& q)>& visible) {
   const Vec3 ln = glm::normalize(glm::cross(ex, ey));
   const double dA = glm::length(glm::cross(ex, ey)) / (double(res) * res);
   double sum = 0.0;
@@ -67,7 +67,7 @@ double parallelogram_irradiance_numerical(const Vec3& p, const Vec3& n, const Ve
       const Vec3 d = q - p;
       const double r2 = glm::dot(d, d), r = std::sqrt(r2);
       const double cos_p = glm::dot(n, d) / r, cos_l = -glm::dot(ln, d) / r;
-      if (cos_p > 0.0 && cos_l > 0.0) sum += cos_p * cos_l / r2;
+      if (cos_p > 0.0 && cos_l > 0.0 && (!visible || visible(q))) sum += cos_p * cos_l / r2;
     }
   return radiance * sum * dA;
 }

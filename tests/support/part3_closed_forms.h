@@ -1,6 +1,7 @@
 #pragma once
 // Closed forms of direct lighting used by the Part 3 tests (and checked
 // against brute-force integration in tests/framework/test_sampling_distributions.cpp).
+#include <functional>
 #include <vector>
 
 #include "core/vec.h"
@@ -46,8 +47,10 @@ double parallelogram_irradiance(const Vec3& p, const Vec3& n, const Vec3& c, con
 
 // The same by brute force, to check the closed form: the area integral
 //   E = integral over the light of L max(0, cos theta) cos(theta_light) / r^2 dA
-// by the midpoint rule on res x res sub-rectangles.
+// by the midpoint rule on res x res sub-rectangles, counting only the points
+// q of the light for which visible(q) holds when it is given (a shadow ray).
 double parallelogram_irradiance_numerical(const Vec3& p, const Vec3& n, const Vec3& c, const Vec3& ex, const Vec3& ey,
-                                          double radiance, int res);
+                                          double radiance, int res,
+                                          const std::function<bool(const Vec3& q)>& visible = {});
 
 }  // namespace pt::test

@@ -151,18 +151,27 @@ std::string MeanTestResult::describe() const {
   return os.str();
 }
 
-MeanTestResult t_test_mean(const RunningStats& s, double expected, double alpha, const std::string& what,
-                           double tolerance) {
+namespace {
+// What both mean tests record before their standard error and p-value.
+MeanTestResult start_mean_test(const char* method, const RunningStats& s, double expected, double alpha,
+                               const std::string& what, double tolerance) {
   MeanTestResult r;
-  r.method = "t";
+  r.method = method;
   r.what = what;
   r.n = s.count();
   r.nonfinite = s.nonfinite_count();
   r.mean = s.mean();
   r.expected = expected;
-  r.standard_error = s.standard_error();
   r.alpha = alpha;
   r.tolerance = tolerance >= 0.0 ? tolerance : default_rounding_tolerance(expected);
+  return r;
+}
+}  // namespace
+
+MeanTestResult t_test_mean(const RunningStats& s, double expected, double alpha, const std::string& what,
+                           double tolerance) {
+  MeanTestResult r = start_mean_test("t", s, expected, alpha, what, tolerance);
+  r.standard_error = s.standard_error();
   const double dof = std::max<double>(1.0, double(r.n - 1));
   finish_mean_test(r, [dof](double t) { return student_t_sf(t, dof); });
   return r;
@@ -170,16 +179,8 @@ MeanTestResult t_test_mean(const RunningStats& s, double expected, double alpha,
 
 MeanTestResult z_test_mean(const RunningStats& s, double expected, double sigma, double alpha,
                            const std::string& what, double tolerance) {
-  MeanTestResult r;
-  r.method = "z";
-  r.what = what;
-  r.n = s.count();
-  r.nonfinite = s.nonfinite_count();
-  r.mean = s.mean();
-  r.expected = expected;
+  MeanTestResult r = start_mean_test("z", s, expected, alpha, what, tolerance);
   r.standard_error = r.n > 0 ? sigma / std::sqrt(double(r.n)) : 0.0;
-  r.alpha = alpha;
-  r.tolerance = tolerance >= 0.0 ? tolerance : default_rounding_tolerance(expected);
   finish_mean_test(r, [](double z) { return normal_sf(z); });
   return r;
 }
@@ -237,31 +238,33 @@ double log_ratio_z(const VarianceRatioResult& r) {
   return d / r.log_ratio_se;
 }
 
+// Both variance-ratio tests: `h0` describes the hypothesis, p_of_z turns the
+// statistic into its p-value.
+template <class PValue>
+VarianceRatioResult variance_ratio_test(const RunningStats& a, const RunningStats& b, double factor, double alpha,
+                                        const std::string& h0, const PValue& p_of_z) {
+  VarianceRatioResult r = compare_variances(a, b);
+  r.what = h0;
+  r.hypothesis = factor;
+  r.alpha = alpha;
+  r.statistic = log_ratio_z(r);
+  r.p_value = r.nonfinite > 0 ? 0.0 : p_of_z(r.statistic);
+  return r;
+}
+
 }  // namespace
 
 VarianceRatioResult variance_ratio_at_least(const RunningStats& a, const RunningStats& b, double factor,
                                             double alpha, const std::string& what) {
-  VarianceRatioResult r = compare_variances(a, b);
-  r.what = what + " [H0: Var(A)/Var(B) >= " + fmt(factor) + ", one-sided]";
-  r.hypothesis = factor;
-  r.alpha = alpha;
-  r.statistic = log_ratio_z(r);
   // Evidence against H0 lies in the lower tail only.
-  r.p_value = r.statistic >= 0.0 ? 1.0 : normal_cdf(r.statistic);
-  if (r.nonfinite > 0) r.p_value = 0.0;
-  return r;
+  return variance_ratio_test(a, b, factor, alpha, what + " [H0: Var(A)/Var(B) >= " + fmt(factor) + ", one-sided]",
+                             [](double z) { return z >= 0.0 ? 1.0 : normal_cdf(z); });
 }
 
 VarianceRatioResult variance_ratio_equals(const RunningStats& a, const RunningStats& b, double factor, double alpha,
                                           const std::string& what) {
-  VarianceRatioResult r = compare_variances(a, b);
-  r.what = what + " [H0: Var(A)/Var(B) = " + fmt(factor) + ", two-sided]";
-  r.hypothesis = factor;
-  r.alpha = alpha;
-  r.statistic = log_ratio_z(r);
-  r.p_value = std::min(1.0, 2.0 * normal_sf(std::abs(r.statistic)));
-  if (r.nonfinite > 0) r.p_value = 0.0;
-  return r;
+  return variance_ratio_test(a, b, factor, alpha, what + " [H0: Var(A)/Var(B) = " + fmt(factor) + ", two-sided]",
+                             [](double z) { return std::min(1.0, 2.0 * normal_sf(std::abs(z))); });
 }
 
 std::string VarianceRatioResult::describe() const {
