@@ -200,18 +200,17 @@ ChildrenEntered enter_children(const BVHNode& node, const Ray& r, const Vec3& in
   return e;
 }
 
-// The work of one query, added to the thread's counters once when it ends
-// (work_counters() is a thread-local lookup, too slow to call per node).
+// The node visits of one query, added to the thread's counters once when it
+// ends. The framework counts a visit in node->bb.intersect (NodeBox); this
+// traversal tests boxes with slab_test and its precomputed reciprocal instead,
+// so it counts them itself. Primitive tests the framework counts for every BVH
+// alike, around each call into Part 1 (geometry/counted.h).
 struct QueryWork {
-  uint64_t node_visits = 0, primitive_tests = 0;
+  uint64_t node_visits = 0;
   QueryWork() = default;
   QueryWork(const QueryWork&) = delete;
   QueryWork& operator=(const QueryWork&) = delete;
-  ~QueryWork() {
-    WorkCounters& c = work_counters();
-    c.node_visits += node_visits;
-    c.primitive_tests += primitive_tests;
-  }
+  ~QueryWork() { work_counters().node_visits += node_visits; }
 };
 
 }  // namespace
@@ -245,10 +244,8 @@ bool BVHAccel::has_intersection(const Ray& r, const BVHNode* node) const {
   int size = 0;
   for (;;) {
     if (node->is_leaf()) {
-      for (size_t i = node->start; i < node->end; ++i) {
-        ++work.primitive_tests;
+      for (size_t i = node->start; i < node->end; ++i)
         if (primitives_[i]->has_intersection(r)) return true;
-      }
     } else {
       ChildrenEntered e = enter_children(*node, r, inv_d);
       work.node_visits += 2;
@@ -284,7 +281,6 @@ bool BVHAccel::intersect(const Ray& r, Intersection* isect, const BVHNode* node)
       // Every primitive of the leaf: each hit shrinks r.max_t, so the last
       // one reported is the nearest.
       for (size_t i = node->start; i < node->end; ++i) hit |= primitives_[i]->intersect(r, isect);
-      work.primitive_tests += node->size();
     } else {
       ChildrenEntered e = enter_children(*node, r, inv_d);
       work.node_visits += 2;

@@ -2,14 +2,27 @@
 #include <memory>
 #include <vector>
 
+#include "core/stats.h"
 #include "geometry/primitive.h"
 
 namespace pt {
 
+// The box of a BVH node: a BBox whose intersect() counts one node visit and
+// then runs BBox::intersect (P2T2). The framework counts the work of every
+// traversal this way, a student's included, as long as it tests node->bb.
+struct NodeBox : BBox {
+  NodeBox() = default;
+  NodeBox(const BBox& b) : BBox(b) {}  // NOLINT: implicit, so that `node->bb = box` works
+  bool intersect(const Ray& r, double& t0, double& t1) const {
+    ++work_counters().node_visits;
+    return BBox::intersect(r, t0, t1);
+  }
+};
+
 // A node owns the primitives [start, end) of the accelerator's primitive
 // array; a leaf has no children.
 struct BVHNode {
-  BBox bb;
+  NodeBox bb;
   size_t start = 0, end = 0;
   std::unique_ptr<BVHNode> l, r;
 

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "core/stats.h"
+#include "geometry/counted.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 
@@ -10,12 +11,12 @@ const Mesh* Scene::add_mesh(Mesh mesh) {
   if (mesh.normals.size() != mesh.positions.size()) mesh.compute_vertex_normals();
   meshes.push_back(std::make_unique<Mesh>(std::move(mesh)));
   const Mesh* m = meshes.back().get();
-  for (const auto& f : m->faces) primitives.push_back(std::make_unique<Triangle>(m, f[0], f[1], f[2]));
+  for (const auto& f : m->faces) primitives.push_back(std::make_unique<Counted<Triangle>>(m, f[0], f[1], f[2]));
   return m;
 }
 
 void Scene::add_sphere(const Vec3& center, double radius, const BSDF* bsdf) {
-  primitives.push_back(std::make_unique<Sphere>(center, radius, bsdf));
+  primitives.push_back(std::make_unique<Counted<Sphere>>(center, radius, bsdf));
 }
 
 const Mesh* Scene::add_quad(const Vec3& c, const Vec3& ex, const Vec3& ey, const BSDF* bsdf) {

@@ -731,8 +731,9 @@ void print_report(const std::vector<SceneResult>& results, const Options& opt, c
     }
   }
   wt.print(os);
-  os << "\ntests / ray and nodes / ray: pt::work_counters() of the reference traversal (primitive tests; nodes whose "
-        "box was tested), one thread, all rays. Brute force: every primitive in scene order (any hit stops at the first),"
+  os << "\ntests / ray and nodes / ray: pt::work_counters(), one thread, all rays: primitive tests as the framework "
+        "counts them around every call into Part 1 (any BVH); nodes whose box was tested as the traversal counts them "
+        "itself (0 for a BVH that does not). Brute force: every primitive in scene order (any hit stops at the first),"
         " one run over an evenly strided subsample of the same rays (at most "
      << fmt("%.0e", opt.brute_budget)
      << " primitive tests per row, at least 16 rays), time extrapolated per ray; speed-up = brute-force time per ray / "

@@ -112,8 +112,8 @@ pt_mutant(2 leaf_hit_overwritten ${p2} [[hit |= primitives_[i]->intersect(r, ise
 # Returns at the first leaf with a hit: but boxes overlap, and a deferred
 # subtree may hold a closer one. Caught by
 # BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
-pt_mutant(2 returns_first_leaf_hit ${p2} [[      work.primitive_tests += node->size();]]
-          [[      work.primitive_tests += node->size();
+pt_mutant(2 returns_first_leaf_hit ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
+          [[hit |= primitives_[i]->intersect(r, isect);
       if (hit) return true;  // the deferred subtrees are never looked at]])
 
 # Tests primitives against a copy of the ray: max_t never shrinks, so a later,
@@ -184,12 +184,8 @@ pt_mutant(2 anyhit_ignores_second_child ${p2} [[stack[size++] = e.far;]] [[(void
 
 # any-hit tests the whole leaf before it returns. Caught by
 # BVHTraversal.AnyHitStopsAtFirstHit.
-pt_mutant(2 anyhit_no_early_exit ${p2} [[      for (size_t i = node->start; i < node->end; ++i) {
-        ++work.primitive_tests;
-        if (primitives_[i]->has_intersection(r)) return true;
-      }]] [[      bool found = false;
-      for (size_t i = node->start; i < node->end; ++i) {
-        ++work.primitive_tests;
+pt_mutant(2 anyhit_no_early_exit ${p2} [[      for (size_t i = node->start; i < node->end; ++i)
+        if (primitives_[i]->has_intersection(r)) return true;]] [[      bool found = false;
+      for (size_t i = node->start; i < node->end; ++i)
         found |= primitives_[i]->has_intersection(r);  // the whole leaf, even after a hit
-      }
       if (found) return true;]])
