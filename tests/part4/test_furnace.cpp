@@ -22,6 +22,7 @@
 // first bounce instead of the last multiplies Le a^m by a^(1-m) >= 1.25 for
 // m >= 2. Each is more than 100 standard errors.
 #include "common.h"
+#include "furnace_check.h"
 #include "support/graded.h"
 
 namespace pt {
@@ -29,19 +30,7 @@ namespace {
 
 using namespace test::part4;
 
-constexpr int kSamples = 50000;
 const double kAlbedos[] = {0.3, 0.5, 0.8};
-
-// One t test of `entry` against `expected` for the furnace of albedo a.
-::testing::AssertionResult furnace_check(double a, const RenderSettings& s, Entry e, double expected, double alpha,
-                                         uint64_t seed) {
-  Scene scene = make_white_furnace(a, kLe);
-  const Aim target = furnace_aim(scene);
-  stats::RunningStats st = sample(scene, target, s, e, kSamples, seed);
-  std::ostringstream what;
-  what << name(e) << " in the white furnace, albedo " << a << ", Le " << kLe << ", " << describe(s);
-  return stats::mean_matches(st, expected, alpha, what.str());
-}
 
 // ---- P4T1: at_least_one_bounce_radiance --------------------------------------
 
@@ -91,26 +80,6 @@ GRADED_TEST(Furnace, FullEstimate, "P4T3", 3, Visible) {
     EXPECT_TRUE(furnace_check(c.a, furnace_settings(1000, c.p), Entry::GlobalIllumination,
                               furnace_bounces(c.a, 0, 1000), alpha, test::seed(seed++)))
         << "expected Le / (1 - a): the emission seen directly plus every bounce";
-}
-
-GRADED_TEST(Furnace, DepthLimitsAndBounceIsolation, "P4T3", 2, Hidden) {
-  // est_radiance_global_illumination, p = 1: with accumulate_bounces,
-  // Le (1 + ... + a^m); without, bounce m alone, Le a^m, where bounce 0 is
-  // the emission seen directly (exactly Le, no noise) and is the only thing
-  // kept for m = 0 in both modes.
-  const int depths[] = {0, 1, 2, 3};
-  const double albedos[] = {0.3, 0.8};
-  const double alpha = alpha_each(2 * 4 * 2);
-  uint64_t seed = 4300;
-  for (double a : albedos)
-    for (int m : depths) {
-      EXPECT_TRUE(furnace_check(a, furnace_settings(m, 1.0, true), Entry::GlobalIllumination,
-                                furnace_bounces(a, 0, m), alpha, test::seed(seed++)))
-          << "accumulate_bounces on: expected Le (1 + a + ... + a^m)";
-      EXPECT_TRUE(furnace_check(a, furnace_settings(m, 1.0, false), Entry::GlobalIllumination,
-                                furnace_bounces(a, m, m), alpha, test::seed(seed++)))
-          << "accumulate_bounces off: expected Le a^m (bounce m alone; for m = 0 the emission seen directly)";
-    }
 }
 
 }  // namespace

@@ -24,6 +24,9 @@ using test::constant;
 using test::Script;
 using test::ScriptedTracer;
 
+// A grey sample: illuminance v, since the Rec. 709 weights sum to 1.
+inline Spectrum grey(double v) { return Spectrum(v); }
+
 // a, b, a, b, ...
 inline Script alternating(const Spectrum& a, const Spectrum& b) {
   std::ostringstream os;
