@@ -14,8 +14,8 @@ GRADED_TEST(CameraRay, CentreLooksAtTarget, "P1T1", 0.5, Visible) {
     Camera cam = make_camera(pose);
     Ray r = cam.generate_ray(0.5, 0.5);
     ASSERT_TRUE(VecNear("ray direction", r.d, glm::normalize(pose.target - pose.pos), kDirTol))
-        << "\nThe ray through the image centre (0.5, 0.5) must point at the camera's target: the view axis is "
-           "-z in camera space, turned into world space by c2w.\n"
+        << "\nThe ray through the image centre (0.5, 0.5) must point at the camera's target.\n"
+        << diagnose(cam, 0.5, 0.5, r) << "\n"
         << cam << "\ntarget " << pose.target << "\nray " << r;
   }
 }
@@ -28,6 +28,7 @@ GRADED_TEST(CameraRay, BottomLeftIsImageOrigin, "P1T1", 0.5, Visible) {
   EXPECT_TRUE(VecNear("ray direction", r.d, expected, kDirTol))
       << "\n(x, y) = (0, 0) is the bottom-left corner of the image: x grows to the right (+x in camera space), "
          "y grows upwards (+y).\n"
+      << diagnose(cam, 0.0, 0.0, r) << "\n"
       << cam << "\nray " << r;
 }
 
@@ -48,7 +49,8 @@ GRADED_TEST(CameraRay, CornersSpanTheSensor, "P1T1", 1, Visible) {
         Vec3 expected = glm::normalize(Vec3((2.0 * x - 1.0) * tx, (2.0 * y - 1.0) * ty, -1.0));
         ASSERT_TRUE(VecNear("ray direction", r.d, expected, kDirTol))
             << "\nCorner (" << x << ", " << y << ") must go through sensor point (" << (2.0 * x - 1.0) * tx << ", "
-            << (2.0 * y - 1.0) * ty << ", -1): tan of HALF the field of view, fov given in degrees.\n"
+            << (2.0 * y - 1.0) * ty << ", -1).\n"
+            << diagnose(cam, x, y, r) << "\n"
             << cam << "\nray " << r;
       }
   }
@@ -74,6 +76,7 @@ GRADED_TEST(CameraRay, EdgeMidpointsAreHalfFovOffAxis, "P1T1", 0.5, Visible) {
       ASSERT_TRUE(Near("the angle (degrees) between the view axis and the ray", angle, e.half_angle, 1e-6))
           << "\nThe ray through the middle of the " << e.name << " edge (" << e.x << ", " << e.y
           << ") is half the field of view away from the view axis.\n"
+          << diagnose(cam, e.x, e.y, r) << "\n"
           << cam << "\nray " << r;
     }
   }

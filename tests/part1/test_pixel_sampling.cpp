@@ -191,5 +191,19 @@ GRADED_TEST_F(PixelSampling, SamplesAreJitteredAcrossThePixel, "P1T2", 1, Visibl
   EXPECT_LT(std::abs(corr), 0.4) << "The x and y offsets must be independent random numbers.\n" << got.str();
 }
 
+GRADED_TEST_F(PixelSampling, JitterComesFromTheRngPassedIn, "P1T2", 0.5, Visible) {
+  // Section 2 of the handout: use the rng you are given. 16 samples of pixel
+  // (3, 2); exact comparisons of the rays (support/scripted_tracer.h).
+  const int ns = 16;
+  EXPECT_TRUE(test::jitter_comes_from(
+      [&](Rng& rng) {
+        ScriptedTracer t = tracer(ns);
+        t.raytrace_pixel(3, 2, rng);
+        return t.rays;
+      },
+      seed(7)))
+      << where(3, 2, ns);
+}
+
 }  // namespace
 }  // namespace pt::test::p1

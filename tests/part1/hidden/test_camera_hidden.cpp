@@ -18,6 +18,7 @@ GRADED_TEST(CameraRay, SensorIsAPlane, "P1T1", 0.5, Hidden) {
       Ray r = cam.generate_ray(x, y);
       ASSERT_TRUE(VecNear("ray direction", r.d, expected_direction(pose, x, y), kDirTol))
           << "\nImage point (" << x << ", " << y << ") must map linearly onto the sensor plane z = -1.\n"
+          << diagnose(cam, x, y, r) << "\n"
           << cam << "\nray " << r;
     }
 }
@@ -31,7 +32,8 @@ GRADED_TEST(CameraRay, PosedCameraMatchesLookAt, "P1T1", 1, Hidden) {
       Ray r = cam.generate_ray(p.x, p.y);
       ASSERT_TRUE(VecNear("ray direction", r.d, expected_direction(pose, p.x, p.y), kDirTol))
           << "\nImage point " << p << " of a camera looking from " << pose.pos << " at " << pose.target
-          << " with up " << pose.up << ": the camera-space direction must be turned into world space by c2w.\n"
+          << " with up " << pose.up << ".\n"
+          << diagnose(cam, p.x, p.y, r) << "\n"
           << cam << "\nray " << r;
     }
   }
