@@ -39,6 +39,17 @@ pt_mutant(3 hemisphere_no_epsilon ${ref}
     Intersection light_isect;]]
   [[    Intersection light_isect;]])
 pt_mutant(3 hemisphere_not_divided_by_n ${ref} [[return L / double(n);]] [[return L;]])
+# N = ns_area_light: the number of lights ignored (the same as the reference
+# with one light, only noisier with several). Caught by
+# HemisphereLighting.SampleCountGrowsWithTheLights (hidden).
+pt_mutant(3 hemisphere_ignores_light_count ${ref}
+  [[const int n = std::max<int>(1, int(scene->lights.size()) * settings.ns_area_light);]]
+  [[const int n = std::max(1, settings.ns_area_light);]])
+# N = lights x ns_area_light with no floor: no sample and 0 / 0 with an empty
+# light list. Caught by HemisphereLighting.SeesEmittersWhenTheLightListIsEmpty.
+pt_mutant(3 hemisphere_no_sample_without_lights ${ref}
+  [[const int n = std::max<int>(1, int(scene->lights.size()) * settings.ns_area_light);]]
+  [[const int n = int(scene->lights.size()) * settings.ns_area_light;]])
 pt_mutant(3 hemisphere_one_sample ${ref}
   [[const int n = std::max<int>(1, int(scene->lights.size()) * settings.ns_area_light);]] [[const int n = 1;]])
 

@@ -10,6 +10,12 @@
 // estimators' output distributions, which do not depend on the order in
 // which a solution draws its random numbers; nothing is compared with the
 // reference implementation's own output.
+//
+// Power: each statistical test states the smallest relative bias that fails
+// it with probability 99%, (z_{1-alpha/2} + z_0.99) x the relative standard
+// error of its most precise check (measured with PT_STATS_VERBOSE=1), and,
+// for a variance test, how far below its stated factor the true ratio must
+// be to fail it with probability 99%, factor x exp(-(z_{1-alpha} + z_0.99) se).
 #include <gtest/gtest.h>
 
 #include <functional>

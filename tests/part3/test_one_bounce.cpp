@@ -5,6 +5,8 @@
 // (albedo/pi) I cos / d^2 with no noise, hemisphere sampling gives exactly 0.
 // An area light beside it gives a mean check (t test, alpha split over the
 // test's checks) that the estimate is the full direct light, not a fragment.
+// Power (99%): with -H, 40,000 estimates, a bias of 4.4% (this test checks
+// the choice of estimator; HemisphereLighting.* check its accuracy).
 #include "common.h"
 #include "one_bounce_scenes.h"
 #include "support/graded.h"

@@ -38,10 +38,11 @@ GRADED_TEST(BounceImages, SumToTheFullRender, "P4T3", 2, Visible) {
   // ~2, see the top of the file). Two-sided t tests of mean(d) = 0 over the
   // whole image and over each quarter, per channel, at alpha_each(15) (Šidák
   // holds for two-sided tests of correlated normal means). The standard error
-  // of mean(d) over the image is about 0.005, against an average radiance of
-  // about 0.2: keeping the first bounce instead of the last, keeping every
-  // bounce up to k, or keeping the emission in every bounce image all move
-  // mean(d) by tens of standard errors.
+  // of mean(d) over the image is about 0.0007 (0.0014 over a quarter), against
+  // an average radiance of about 0.2: keeping the first bounce instead of the
+  // last, keeping every bounce up to k, or keeping the emission in every
+  // bounce image all move mean(d) by tens of standard errors. Power (99%): a
+  // mean difference of 0.0052 over the whole image.
   const Scene scene = test::make_cornell_box();
   const int size = 96;
   auto render_with = [&](int depth, bool accumulate, uint64_t seed) {

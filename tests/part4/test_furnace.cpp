@@ -37,7 +37,8 @@ const double kAlbedos[] = {0.3, 0.5, 0.8};
 GRADED_TEST(Furnace, EachDepthLimit, "P4T1", 3, Visible) {
   // at_least_one_bounce_radiance with r.depth = max_ray_depth = m returns
   // bounces 1..m: Le (a + ... + a^m). Russian roulette off (p = 1), so that
-  // only the recursion and its depth are tested here.
+  // only the recursion and its depth are tested here. Power (99%): a bias of
+  // 0.9% (the best-resolved configuration) to 1.9% (every configuration).
   const int depths[] = {1, 2, 3, 5};
   const double alpha = alpha_each(3 * 4);
   uint64_t seed = 4000;
@@ -52,6 +53,7 @@ GRADED_TEST(Furnace, EachDepthLimit, "P4T1", 3, Visible) {
 GRADED_TEST(Furnace, KeepsOnlyTheLastBounce, "P4T1", 2, Visible) {
   // accumulate_bounces off: at_least_one_bounce_radiance keeps only the
   // direct light of the last vertex (r.depth == 1), bounce m: Le a^m.
+  // Power (99%): a bias of 1.9% in any configuration.
   const int depths[] = {1, 2, 3, 4};
   const double alpha = alpha_each(3 * 4);
   uint64_t seed = 4100;
@@ -70,6 +72,7 @@ GRADED_TEST(Furnace, FullEstimate, "P4T3", 3, Visible) {
   // i.e. Le / (1 - a) to 1e-52. p = 0.7 (the default) for a = 0.3 and 0.5,
   // p = 0.9 for a = 0.8 (p >= a keeps every path weight a^k / p^(k-1) <= 1;
   // with p < a^2 the variance would grow without bound with the depth).
+  // Power (99%): a bias of 0.4% (a = 0.3) to 1.1% (a = 0.8).
   struct Case {
     double a, p;
   };

@@ -8,6 +8,7 @@ namespace {
 
 using namespace test::part3;
 
+// Exact per sample (1e-9): no statistics.
 GRADED_TEST(DiffuseBSDF, SampleFReturnsThePdfOfItsDirection, "P3T1", 1, Hidden) {
   // Exact, per sample: wi is a unit vector in the upper hemisphere, the pdf
   // written is cos(theta)/pi of that wi (the density the chi-square test

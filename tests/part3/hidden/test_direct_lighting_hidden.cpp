@@ -49,6 +49,8 @@ double sky_expected(const Vec3& n, double sky) {
   return lambert_out(sky * (kPi - psa));
 }
 
+// Relative standard errors 0.57% to 1.2%: power (99%) a bias of 4.0% in the
+// best-resolved configuration.
 GRADED_TEST(HemisphereLighting, ShadowsOnlyWhereAnOccluderBlocks, "P3T3", 1, Hidden) {
   check_occluders(Method::Hemisphere, 100000, 3310);
 }
@@ -56,7 +58,7 @@ GRADED_TEST(HemisphereLighting, ShadowsOnlyWhereAnOccluderBlocks, "P3T3", 1, Hid
 GRADED_TEST(HemisphereLighting, SeesTheSkyWhereRaysEscape, "P3T3", 1, Hidden) {
   // Rays that leave the scene bring scene->background(): the sky. Two
   // receiver orientations, 40000 estimates each (the sky estimator's CV is
-  // about 1: se 0.25%).
+  // about 1: se 0.17% and 0.19%). Power (99%): a bias of 1.2%.
   const std::vector<Vec3> normals = {{0, 0, 1}, glm::normalize(Vec3(0.6, -0.2, 0.5))};
   uint64_t seed = 3320;
   for (const Vec3& n : normals) {
@@ -69,6 +71,8 @@ GRADED_TEST(HemisphereLighting, SeesTheSkyWhereRaysEscape, "P3T3", 1, Hidden) {
 
 // ---- P3T4: light sampling ------------------------------------------------------
 
+// Relative standard errors 0.02% to 0.34%: power (99%) a bias of 0.16% in
+// the best-resolved configuration.
 GRADED_TEST(LightSampling, ShadowsOnlyWhereAnOccluderBlocks, "P3T4", 1, Hidden) {
   check_occluders(Method::Importance, 50000, 3410);
 }
@@ -78,7 +82,8 @@ GRADED_TEST(LightSampling, SumsOverLightsAveragingEachOnItsOwn, "P3T4", 1, Hidde
   // a black wall at x = 1.5 that blocks part of the sky and none of the
   // other lights): the estimate is the sum of each light's own average, with
   // ns_area_light = 4 samples for each area light and the sky. 40000
-  // estimates; one t test at alpha = 1e-5.
+  // estimates; one t test at alpha = 1e-5 (relative standard error 0.057%:
+  // power (99%) 0.38%; averaging over all lights' samples divides by 5).
   const Vec3 n = glm::normalize(Vec3(0.1, 0.1, 1));
   const Vec3 c0(0, 0, 1), ex0(0.8, 0, 0), ey0(0, -0.6, 0);
   const Vec3 c1(-0.6, 0.4, 0.8), ex1(0.2, 0, 0.05), ey1(0, -0.2, 0);

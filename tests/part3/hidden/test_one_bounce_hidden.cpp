@@ -8,6 +8,8 @@ namespace {
 
 using namespace test::part3;
 
+// The point light exactly (1e-9 relative); point + area light: power (99%)
+// a bias of 0.13%.
 GRADED_TEST(OneBounce, DefaultSettingSamplesTheLights, "P3T5", 1, Hidden) {
   Lit lit = point_only();
   PathTracer tracer(lit.scene, settings_with(4, /*hemisphere=*/false));

@@ -13,7 +13,7 @@ GRADED_TEST(Furnace, DepthLimitsAndBounceIsolation, "P4T3", 2, Hidden) {
   // est_radiance_global_illumination, p = 1: with accumulate_bounces,
   // Le (1 + ... + a^m); without, bounce m alone, Le a^m, where bounce 0 is
   // the emission seen directly (exactly Le, no noise) and is the only thing
-  // kept for m = 0 in both modes.
+  // kept for m = 0 in both modes. Power (99%): a bias of 0.4% to 1.9%.
   const int depths[] = {0, 1, 2, 3};
   const double albedos[] = {0.3, 0.8};
   const double alpha = alpha_each(2 * 4 * 2);

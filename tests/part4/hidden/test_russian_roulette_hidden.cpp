@@ -16,9 +16,9 @@ GRADED_TEST(RussianRoulette, RaisesTheVariance, "P4T2", 2, Hidden) {
   // one bounce later. One-sided log-variance-ratio test (statistics.h,
   // valid for these skewed samples) of H0 "ratio >= 2" at alpha = 1e-5: a
   // correct solution (ratio >= 5) fails with probability below 1e-5. With
-  // n = 40000 the standard error of the log ratio is about 0.03, so a
-  // solution without roulette (ratio 1, log 2 = 0.69 below the bound) fails
-  // with certainty.
+  // n = 40000 the standard error of the log ratio is 0.016, so a solution
+  // without roulette (ratio 1, log 2 = 0.69 below the bound) fails with
+  // certainty. Power (99%): a true ratio of 1.8 or less fails.
   Scene scene = make_white_furnace(0.8, kLe);
   const Aim target = furnace_aim(scene);
   const RenderSettings with_rr = furnace_settings(6, 0.5), without_rr = furnace_settings(6, 1.0);
@@ -37,6 +37,7 @@ GRADED_TEST(RussianRoulette, HighAlbedoIsStable, "P4T2", 1, Hidden) {
   // Le a (1 - a^10000) / (1 - a) = 19 Le; t test, n = 20000, relative
   // standard error 0.7%. (2) p = 0.7 (the default): every estimate finite
   // and non-negative (p < a^2 makes the variance enormous, so no mean test).
+  // Power of (1) (99%): a bias of 4.4%.
   Scene scene = make_white_furnace(0.95, kLe);
   const Aim target = furnace_aim(scene);
   const RenderSettings s = furnace_settings(10000, 0.95);

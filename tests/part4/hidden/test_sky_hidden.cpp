@@ -20,6 +20,7 @@ GRADED_TEST(Sky, IsNotAddedAgainWhenABounceEscapes, "P4T1", 1, Hidden) {
   // 4 a S cos(theta) on the upper half, 0 on the lower: bounded, relative
   // standard deviation 1.29, standard error 0.9% of a S. Adding the sky again
   // at an escaping bounce doubles the value (about 100 standard errors).
+  // Power (99%): a bias of 6.3%.
   Scene scene = sky_over_floor();
   const Aim floor_hit = aim(scene, {0, 0, 1}, {0.3, 0.2, -1.0});
   const double expected = kFloorAlbedo * kSky.g;

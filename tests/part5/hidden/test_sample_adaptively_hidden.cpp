@@ -9,6 +9,7 @@ namespace pt {
 namespace {
 
 using test::part5::alternating;
+using test::part5::constant;
 using test::part5::grey;
 
 GRADED_TEST(SampleAdaptively, VarianceUsesNMinusOne, "P5T1", 0.5, Hidden) {
@@ -48,6 +49,35 @@ GRADED_TEST(SampleAdaptively, ToleranceIsRelativeToTheMean, "P5T1", 0.5, Hidden)
                   "the rule is relative: 1.96 sigma / sqrt(n) <= tol * mu, T = 37.52 at any scale");
   EXPECT_STOPS_AT(alternating(grey(0.03), grey(0.01)), 4096, 8, 0.16, 40,
                   "the rule is relative: 1.96 sigma / sqrt(n) <= tol * mu, T = 37.52 at any scale");
+}
+
+GRADED_TEST(SampleAdaptively, HalfWidthIsSigmaOverSqrtN, "P5T1", 0.5, Hidden) {
+  // The half-width is 1.96 sigma / sqrt(n), with sigma^2 already divided by
+  // n - 1; dividing by sqrt(n - 1) instead widens it by sqrt(n / (n - 1)),
+  // which moves the stop only while n is small. Alternating 3, 1: mu = 2,
+  // sp = 1; tol = 0.335: T = (1.96 / 0.67)^2 = 8.558. Batch 2: at n = 8 the
+  // half-width is 1.106 tol mu, at n = 10 0.975 tol mu: stop at 10 (with
+  // sqrt(n - 1), 1.028 tol mu at 10: stop at 12). Batch 1: at n = 8 1.106,
+  // at n = 9 0.974 (odd n: s1 = 2n + 1): stop at 9 (with sqrt(n - 1): 11).
+  // Each check either side of the stop misses the rule by 2.5% or more.
+  // Boundary: the stopping count, exact.
+  EXPECT_STOPS_AT(alternating(grey(3), grey(1)), 1000, 2, 0.335, 10,
+                  "T = 8.558: the first even n with n - 1 >= T; with sigma / sqrt(n - 1) the pixel would stop at 12");
+  EXPECT_STOPS_AT(alternating(grey(3), grey(1)), 1000, 1, 0.335, 9,
+                  "half-width 0.974 tol mu at n = 9; with sigma / sqrt(n - 1) the pixel would stop at 11");
+}
+
+GRADED_TEST(SampleAdaptively, BatchOfOneSkipsTheFirstCheck, "P5T1", 0.5, Hidden) {
+  // With samples_per_batch = 1 every n is a whole batch, but sigma^2 needs two
+  // samples (handout, section 4): the first check is at n = 2. Checked at
+  // n = 1, (s2 - s1^2) / 0 is 0 / 0, and a clamp max(0, NaN) or a variance
+  // divided by n turns it into 0: every pixel "converges" after one sample.
+  // A constant pixel stops at 2; alternating 3, 1 with tol 0.335 at 9 (as
+  // in the test above). Boundary: n = 1 against n = 2, exact.
+  EXPECT_STOPS_AT(constant(grey(0.5)), 1000, 1, 0.05, 2,
+                  "batch size 1: the first check is at n = 2 (sigma^2 needs two samples), where a constant pixel stops");
+  EXPECT_STOPS_AT(alternating(grey(3), grey(1)), 1000, 1, 0.335, 9,
+                  "batch size 1: no check at n = 1; the rule first holds at n = 9");
 }
 
 }  // namespace
