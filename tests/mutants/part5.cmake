@@ -6,12 +6,14 @@ set(p5 reference/part5_adaptive_sampling.cpp)
 pt_mutant(5 variance_over_n ${p5} [[/ (n - 1));]] [[/ n);]])
 
 # The half-width with sqrt(n - 1): sigma^2 is already divided by n - 1.
-# Caught by SampleAdaptively.HalfWidthIsSigmaOverSqrtN (hidden).
+# Caught by SampleAdaptively.HalfWidthIsSigmaOverSqrtN (hidden),
+# SampleAdaptively.BatchOfOneSkipsTheFirstCheck (hidden).
 pt_mutant(5 half_width_sqrt_n_minus_1 ${p5} [[1.96 * std::sqrt(var / n)]] [[1.96 * std::sqrt(var / (n - 1))]])
 
 # Checks at n = 1 when the batch size is 1: (s2 - s1^2) / 0 = NaN, clamped
 # to 0, and every pixel stops after one sample.
-# Caught by SampleAdaptively.BatchOfOneSkipsTheFirstCheck (hidden).
+# Caught by SampleAdaptively.BatchOfOneSkipsTheFirstCheck (hidden),
+# SampleAdaptively.HalfWidthIsSigmaOverSqrtN (hidden).
 pt_mutant(5 batch_of_one_checks_first_sample ${p5} [[n % samples_per_batch == 0 && n > 1]]
           [[n % samples_per_batch == 0]])
 

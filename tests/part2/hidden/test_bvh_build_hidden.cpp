@@ -14,6 +14,72 @@
 namespace pt::test::p2 {
 namespace {
 
+// An address-space limit of `extra` bytes beyond what the process maps now
+// (or the limit already in force, if lower), for the life of the object: a
+// build that never stops then fails with std::bad_alloc within a fraction of
+// a second instead of taking the machine's memory.
+class AddressSpaceLimit {
+ public:
+  explicit AddressSpaceLimit(rlim_t extra) {
+    getrlimit(RLIMIT_AS, &old_);
+    rlimit l = old_;
+    l.rlim_cur = std::min(old_.rlim_cur, mapped_bytes() + extra);
+    setrlimit(RLIMIT_AS, &l);
+  }
+  ~AddressSpaceLimit() { setrlimit(RLIMIT_AS, &old_); }
+  AddressSpaceLimit(const AddressSpaceLimit&) = delete;
+  AddressSpaceLimit& operator=(const AddressSpaceLimit&) = delete;
+
+ private:
+  static rlim_t mapped_bytes() {
+    unsigned long pages = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    return rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
+  }
+  rlimit old_;
+};
+
+// The student's BVH over `prims` with max_leaf_size 0, built with 256 MiB to
+// spare (the builds below need well under 1 MiB); nullptr, and a failure, if
+// the build ran out of it.
+std::unique_ptr<CountedBVH> build_leaf_size_zero(const std::vector<const Primitive*>& prims, const std::string& what) {
+  try {
+    AddressSpaceLimit limit(rlim_t(256) << 20);
+    return std::make_unique<CountedBVH>(prims, 0);
+  } catch (const std::bad_alloc&) {
+    ADD_FAILURE() << what << ", max_leaf_size 0: the build ran out of 256 MiB of memory: it does not stop at a range "
+                  << "of one primitive (take max_leaf_size 0 as 1)";
+    return nullptr;
+  }
+}
+
+// max_leaf_size 0 is taken as 1 (the handout): every leaf holds one
+// primitive. A build that makes a leaf only when a range holds at most
+// max_leaf_size primitives never stops at one primitive: one that halves a
+// range it cannot split then works on the same single primitive forever,
+// recursing until the stack overflows or, once the compiler has turned that
+// last call into a loop, allocating nodes without end until the memory limit
+// above stops it (in 0.4 s; freeing the millions of nested nodes it made
+// then overflows the stack too). Either way the test crashes, which costs
+// only its own points, and never the machine's memory. Checked:
+// the invariants with leaves of at most one primitive, the depth bound, and
+// closest and any hit against the linear scan. Exact; boundary: leaf size 0.
+GRADED_TEST(BVHDegenerate, LeafSizeZeroMeansOne, "P2T1", 0.5, Hidden) {
+  Part2Scene soup = make_soup(seed(312), 600, 40), copies = make_copies(64), one;
+  one.name = "a single triangle";
+  one.add_triangle(Vec3(-1, 0, 0), Vec3(1, 0.5, 0.25), Vec3(0, 1, -0.5));
+  uint64_t rays_seed = seed(313);
+  for (const Part2Scene* s : {&one, &copies, &soup}) {
+    const std::string what = s->name + ", max_leaf_size 0";
+    std::unique_ptr<CountedBVH> bvh = build_leaf_size_zero(s->primitives(), s->name);
+    if (bvh && expect_valid_tree(*bvh, what))
+      expect_agrees_with_linear_scan(*bvh, s->primitives(), make_rays(*s, 300, rays_seed++), what);
+  }
+}
+
 // All centroids on one plane: one axis has zero centroid extent (a division
 // by it gives NaN bins; a mean split along it leaves one side empty). The
 // other two axes must still be used: the tree must stay as good as the
@@ -92,70 +158,5 @@ GRADED_TEST(BVHQuality, WorkPerRayOnMesh, "P2T1", 1, Hidden) {
       << s.name << ": your BVH reaches " << student.nodes() << " nodes per ray; the baseline " << baseline.nodes();
 }
 
-// An address-space limit of `extra` bytes beyond what the process maps now
-// (or the limit already in force, if lower), for the life of the object: a
-// build that never stops then fails with std::bad_alloc within a fraction of
-// a second instead of taking the machine's memory.
-class AddressSpaceLimit {
- public:
-  explicit AddressSpaceLimit(rlim_t extra) {
-    getrlimit(RLIMIT_AS, &old_);
-    rlimit l = old_;
-    l.rlim_cur = std::min(old_.rlim_cur, mapped_bytes() + extra);
-    setrlimit(RLIMIT_AS, &l);
-  }
-  ~AddressSpaceLimit() { setrlimit(RLIMIT_AS, &old_); }
-  AddressSpaceLimit(const AddressSpaceLimit&) = delete;
-  AddressSpaceLimit& operator=(const AddressSpaceLimit&) = delete;
-
- private:
-  static rlim_t mapped_bytes() {
-    unsigned long pages = 0;
-    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
-      if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
-      std::fclose(f);
-    }
-    return rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
-  }
-  rlimit old_;
-};
-
-// The student's BVH over `prims` with max_leaf_size 0, built with 256 MiB to
-// spare (the builds below need well under 1 MiB); nullptr, and a failure, if
-// the build ran out of it.
-std::unique_ptr<CountedBVH> build_leaf_size_zero(const std::vector<const Primitive*>& prims, const std::string& what) {
-  try {
-    AddressSpaceLimit limit(rlim_t(256) << 20);
-    return std::make_unique<CountedBVH>(prims, 0);
-  } catch (const std::bad_alloc&) {
-    ADD_FAILURE() << what << ", max_leaf_size 0: the build ran out of 256 MiB of memory: it does not stop at a range "
-                  << "of one primitive (take max_leaf_size 0 as 1)";
-    return nullptr;
-  }
-}
-
-// max_leaf_size 0 is taken as 1 (the handout): every leaf holds one
-// primitive. A build that makes a leaf only when a range holds at most
-// max_leaf_size primitives never stops at one primitive: one that halves a
-// range it cannot split then works on the same single primitive forever,
-// recursing until the stack overflows or, once the compiler has turned that
-// last call into a loop, allocating nodes without end until the memory limit
-// above stops it (in 0.4 s; freeing the millions of nested nodes it made
-// then overflows the stack too). Either way the test crashes, which costs
-// only its own points, and never the machine's memory. Checked:
-// the invariants with leaves of at most one primitive, the depth bound, and
-// closest and any hit against the linear scan. Exact; boundary: leaf size 0.
-GRADED_TEST(BVHDegenerate, LeafSizeZeroMeansOne, "P2T1", 0.5, Hidden) {
-  Part2Scene soup = make_soup(seed(312), 600, 40), copies = make_copies(64), one;
-  one.name = "a single triangle";
-  one.add_triangle(Vec3(-1, 0, 0), Vec3(1, 0.5, 0.25), Vec3(0, 1, -0.5));
-  uint64_t rays_seed = seed(313);
-  for (const Part2Scene* s : {&one, &copies, &soup}) {
-    const std::string what = s->name + ", max_leaf_size 0";
-    std::unique_ptr<CountedBVH> bvh = build_leaf_size_zero(s->primitives(), s->name);
-    if (bvh && expect_valid_tree(*bvh, what))
-      expect_agrees_with_linear_scan(*bvh, s->primitives(), make_rays(*s, 300, rays_seed++), what);
-  }
-}
 }  // namespace
 }  // namespace pt::test::p2
