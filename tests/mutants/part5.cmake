@@ -95,7 +95,7 @@ pt_mutant(5 swapped_width_height ${p5} [[(x + u.x) / settings.width, (y + u.y) /
           [[(x + u.x) / settings.height, (y + u.y) / settings.width]])
 
 # Jitters with a generator of its own, seeded from the pixel.
-# Caught by PixelAdaptive.JitterComesFromTheRngPassedIn (hidden).
+# Caught by PixelAdaptive.UsesOnlyTheRngItIsGiven (hidden).
 pt_mutant(5 own_rng ${p5} [[  auto next_sample = [&] {
     Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
   auto next_sample = [&] {

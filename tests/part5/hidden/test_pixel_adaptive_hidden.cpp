@@ -13,7 +13,7 @@ using test::part5::describe;
 using test::part5::scene_with_camera;
 using test::part5::ScriptedTracer;
 
-GRADED_TEST(PixelAdaptive, JitterComesFromTheRngPassedIn, "P5T1", 0.5, Hidden) {
+GRADED_TEST(PixelAdaptive, UsesOnlyTheRngItIsGiven, "P5T1", 0.5, Hidden) {
   // 16 samples of pixel (5, 1) (alternating 1, 0 never meets the rule);
   // exact comparisons of the rays. Boundary: exact, fails only if the jitter
   // ignores the rng passed in (or one number in 2^32 repeats).
