@@ -79,7 +79,9 @@ ColladaDocument::ColladaDocument(std::string path, std::vector<std::string>* war
   for (XmlNode n = r; n; n = next_element(n, r)) {
     if (pugi::xml_attribute id = n.attribute("id")) {
       auto [it, inserted] = ids_.emplace(std::string_view(id.value()), n);
-      if (!inserted) fail(n, "duplicate id '" + quoted(id.value()) + "' (also on " + path_of(it->second) + ")");
+      if (!inserted)
+        throw SceneError(path_ + ": " + path_of(n, false) + ": duplicate id '" + quoted(id.value()) + "' (also on " +
+                         path_of(it->second, false) + ")");
     }
   }
 }
@@ -100,11 +102,11 @@ std::string ColladaDocument::quoted(std::string_view s) {
   return out;
 }
 
-std::string ColladaDocument::path_of(XmlNode e) {
+std::string ColladaDocument::path_of(XmlNode e, bool by_id) {
   std::vector<std::string> parts;
   for (; e && e.type() == pugi::node_element; e = e.parent()) {
     std::string part = quoted(e.name());
-    if (pugi::xml_attribute id = e.attribute("id")) {
+    if (pugi::xml_attribute id = e.attribute("id"); id && by_id) {
       part += "[@id='" + quoted(id.value()) + "']";
     } else if (e.previous_sibling(e.name()) || e.next_sibling(e.name())) {
       size_t position = 1;

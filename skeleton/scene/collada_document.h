@@ -30,7 +30,8 @@ class ColladaDocument {
   // Where an element is, as an XPath: elements with an id are named by it,
   // repeated siblings by their 1-based position:
   // "/COLLADA/library_geometries/geometry[@id='box']/mesh/polylist[2]".
-  static std::string path_of(XmlNode e);
+  // With by_id false, by positions only (two elements with one id differ).
+  static std::string path_of(XmlNode e, bool by_id = true);
   // A name or attribute value fit for a message: printable, at most 60 chars.
   static std::string quoted(std::string_view s);
 

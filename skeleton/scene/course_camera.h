@@ -1,7 +1,7 @@
 #pragma once
-// The view the course's own viewer shows a scene from (measured facts in
-// ../shared/course_scenes.md): `pathtracer --course-camera`, so that renders
-// can be laid beside the course's images.
+// The view the course's own viewer shows a scene from (measured by loading
+// course files into it; scenes/README.md): `pathtracer --course-camera`, so
+// that renders can be laid beside the course's images.
 #include "geometry/bbox.h"
 #include "scene/camera.h"
 

@@ -1,7 +1,7 @@
 // COLLADA import of valid files: our own .dae files under data/collada (each
 // commented with what it holds and where things must land) and the library
 // scenes under scenes/collada. Expected values come from the COLLADA
-// definitions and the course's conventions (course_scenes.md), worked by hand
+// definitions and the course's conventions (scenes/README.md), worked by hand
 // in the files' comments, never from the loader's output.
 #include <gtest/gtest.h>
 
@@ -377,7 +377,7 @@ TEST(CourseCamera, CornellReframingAt480x360GivesTheCoursesVerticalFov) {
   EXPECT_VEC_NEAR(c.pos, Vec3(0, 1, 1.5 * std::sqrt(12.0)), 1e-12);
   EXPECT_VEC_NEAR(-c.c2w[2], Vec3(0, 0, -1), 1e-12);
   EXPECT_VEC_NEAR(c.c2w[1], Vec3(0, 1, 0), 1e-12);
-  // course_scenes.md: xfov 49.134 at 16:9 is fitted to 800 x 600 (vfov from
+  // The course's viewer: xfov 49.134 at 16:9 is fitted to 800 x 600 (vfov from
   // xfov at 4:3), then 480 x 360 keeps the screen distance: vfov ~ 23.25.
   double fitted_half_tan = half_tan(49.13434) / (4.0 / 3.0);
   double d = 600.0 / (2.0 * fitted_half_tan);
