@@ -151,6 +151,35 @@ TEST(ColladaZUp, TheFileCameraIsPlacedByItsNode) {
   EXPECT_DOUBLE_EQ(c.far_clip, 100.0);
 }
 
+class ColladaAxes : public DaeFiles {};
+
+TEST_F(ColladaAxes, XUpAndYUpAndTheDefault) {
+  // X_UP as the course's loader converts it: (x, y, z) -> (y, x, -z), a rotation.
+  LoadedScene x_up = load(collada_document("", kTriNode, "X_UP"));
+  EXPECT_TRUE(has_triangle(x_up.scene, Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0)));
+  LoadedScene y_up = load(collada_document("", kTriNode, "Y_UP"));
+  EXPECT_TRUE(has_triangle(y_up.scene, Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)));
+  // Without <up_axis>, COLLADA's default Y_UP.
+  std::string none = collada_document("", kTriNode);
+  none.replace(none.find("<up_axis>"), std::string("<up_axis>Y_UP</up_axis>").size(), "");
+  EXPECT_TRUE(has_triangle(load(none).scene, Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)));
+}
+
+TEST_F(ColladaAxes, FileNormalsFollowTheInverseTranspose) {
+  // A normal (1, 1, 0) under a scale of 2 along y: the surface it is normal
+  // to is stretched, so the normal turns towards x: (1, 1/2, 0), normalised.
+  std::string g = geometry(R"(<source id="g-pos"><float_array id="g-arr">0 0 0  1 -1 0  0 0 1</float_array></source>
+    <source id="g-n"><float_array id="g-n-arr">1 1 0</float_array></source>
+    <vertices id="g-v"><input semantic="POSITION" source="#g-pos"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#g-v" offset="0"/><input semantic="NORMAL" source="#g-n" offset="1"/>
+      <p>0 0 1 0 2 0</p></triangles>)");
+  LoadedScene loaded = load(collada_document(g, R"(<node id="n"><scale>1 2 1</scale><instance_geometry url="#g"/></node>)"));
+  const Mesh* m = mesh_named(loaded.scene, "g");
+  ASSERT_NE(m, nullptr);
+  ASSERT_EQ(m->normals.size(), 3u);
+  for (const Vec3& n : m->normals) EXPECT_VEC_NEAR(n, glm::normalize(Vec3(1, 0.5, 0)), 1e-12);
+}
+
 // ---------------------------------------------------------------- meshes
 
 TEST(ColladaMeshes, PolylistOffsetsAndConcavePolygons) {
