@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/json_reader.h"  // text_position, format_number, kMaxMagnitude
+#include "scene/scene_text.h"
 #include "scene/scene_loader.h"
 
 namespace pt {

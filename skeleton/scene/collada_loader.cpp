@@ -17,7 +17,7 @@
 #include "scene/collada_document.h"
 #include "scene/collada_mesh.h"
 #include "scene/course_camera.h"
-#include "scene/json_reader.h"  // format_number, kMaxMagnitude
+#include "scene/scene_text.h"
 
 namespace pt {
 
@@ -239,7 +239,12 @@ class ColladaLoader {
     if (XmlNode mesh = geometry.child("mesh")) {
       auto it = meshes_.find(mesh.internal_object());
       if (it == meshes_.end()) it = meshes_.emplace(mesh.internal_object(), read_collada_mesh(doc_, mesh)).first;
-      for (const ColladaMeshPart& part : it->second) add_mesh(instance, geometry, part, world);
+      size_t faces = 0;
+      for (const ColladaMeshPart& part : it->second) {
+        add_mesh(instance, geometry, part, world);
+        faces += part.faces.size();
+      }
+      if (faces == 0) warn_once(geometry, "has no faces: nothing of it is rendered");
       return;
     }
     if (XmlNode sphere = cgl_technique(geometry).child("sphere")) {

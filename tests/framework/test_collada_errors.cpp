@@ -252,6 +252,11 @@ TEST_F(ColladaErrors, ApproximationsAreWarnedAboutAndTheirNumberIsBounded) {
     </COLLADA>)");
   EXPECT_EQ(count_containing(first.warnings, "using the first one"), 1u);
 
+  // A mesh without faces (here: only sources) is said to render nothing.
+  LoadedScene empty = load(collada_document(geometry(R"(<source id="g-pos"><float_array id="g-arr">0 0 0</float_array></source>)"),
+                                            std::string(kTriNode) + kGNode));
+  EXPECT_EQ(count_containing(empty.warnings, "geometry[@id='g']: has no faces"), 1u);
+
   // 150 skinned meshes: 150 warnings about what is ignored, of which 100 are
   // kept and the rest counted.
   std::string nodes = kTriNode;
