@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libstb-dev libtinyexr-dev libtinyobjloader-dev
-  nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev
+  nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev libarchive-dev zip
   libboost-math-dev
 )
 missing=()

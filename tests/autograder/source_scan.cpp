@@ -1,0 +1,241 @@
+#include "source_scan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+namespace pt::grade {
+
+namespace {
+
+// The C++17 standard library's headers, and the C headers it keeps.
+const std::set<std::string>& standard_headers() {
+  static const std::set<std::string> names = {
+      "algorithm", "any", "array", "atomic", "bitset", "cassert", "ccomplex", "cctype", "cerrno", "cfenv",
+      "cfloat", "charconv", "chrono", "cinttypes", "ciso646", "climits", "clocale", "cmath", "codecvt", "complex",
+      "condition_variable", "csetjmp", "csignal", "cstdalign", "cstdarg", "cstdbool", "cstddef", "cstdint",
+      "cstdio", "cstdlib", "cstring", "ctgmath", "ctime", "cuchar", "cwchar", "cwctype", "deque", "exception",
+      "execution", "filesystem", "forward_list", "fstream", "functional", "future", "initializer_list", "iomanip",
+      "ios", "iosfwd", "iostream", "istream", "iterator", "limits", "list", "locale", "map", "memory",
+      "memory_resource", "mutex", "new", "numeric", "optional", "ostream", "queue", "random", "ratio", "regex",
+      "scoped_allocator", "set", "shared_mutex", "sstream", "stack", "stdexcept", "streambuf", "string",
+      "string_view", "strstream", "system_error", "thread", "tuple", "type_traits", "typeindex", "typeinfo",
+      "unordered_map", "unordered_set", "utility", "valarray", "variant", "vector",
+      // C headers kept by C++ ([depr.c.headers])
+      "assert.h", "complex.h", "ctype.h", "errno.h", "fenv.h", "float.h", "inttypes.h", "iso646.h", "limits.h",
+      "locale.h", "math.h", "setjmp.h", "signal.h", "stdalign.h", "stdarg.h", "stdbool.h", "stddef.h", "stdint.h",
+      "stdio.h", "stdlib.h", "string.h", "tgmath.h", "time.h", "uchar.h", "wchar.h", "wctype.h"};
+  return names;
+}
+
+// GLM is the framework's vector library (core/vec.h includes it): its headers
+// are as harmless as the standard library's, and students use them.
+bool is_glm_header(const std::string& name) {
+  if (name.rfind("glm/", 0) != 0 || name.find("..") != std::string::npos) return false;
+  return std::all_of(name.begin(), name.end(),
+                     [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '/' || c == '.'; });
+}
+
+// The text after the preprocessor's phases 2 and 3 as far as directives and
+// identifiers need them: line splices removed, each comment replaced by one
+// space, literals kept. line_of[i] is the submitted line of text[i].
+struct Cleaned {
+  std::string text;
+  std::vector<int> line_of;
+  std::vector<bool> literal;                          // text[i] is inside a string or character literal
+  std::vector<std::pair<int, std::string>> strings;  // string literals, with their line
+};
+
+Cleaned clean(const std::string& src) {
+  // Phase 2: splices.
+  std::string spliced;
+  std::vector<int> line;
+  int ln = 1;
+  for (size_t i = 0; i < src.size(); ++i) {
+    if (src[i] == '\\') {
+      size_t j = i + 1;
+      if (j < src.size() && src[j] == '\r') ++j;
+      if (j < src.size() && src[j] == '\n') {
+        i = j;
+        ++ln;
+        continue;
+      }
+    }
+    spliced += src[i];
+    line.push_back(ln);
+    if (src[i] == '\n') ++ln;
+  }
+  // Phase 3: comments and literals.
+  Cleaned out;
+  auto put = [&](char c, size_t at, bool literal = false) {
+    out.text += c;
+    out.line_of.push_back(line[at]);
+    out.literal.push_back(literal);
+  };
+  const size_t n = spliced.size();
+  for (size_t i = 0; i < n;) {
+    char c = spliced[i];
+    if (c == '/' && i + 1 < n && spliced[i + 1] == '/') {
+      while (i < n && spliced[i] != '\n') ++i;
+      put(' ', i - 1);
+    } else if (c == '/' && i + 1 < n && spliced[i + 1] == '*') {
+      size_t end = spliced.find("*/", i + 2);
+      put(' ', i);
+      i = end == std::string::npos ? n : end + 2;
+    } else if (c == 'R' && i + 1 < n && spliced[i + 1] == '"' &&
+               (i == 0 || !(std::isalnum((unsigned char)spliced[i - 1]) || spliced[i - 1] == '_') ||
+                spliced[i - 1] == 'u' || spliced[i - 1] == 'U' || spliced[i - 1] == 'L' || spliced[i - 1] == '8')) {
+      // Raw string R"delim( ... )delim": no escapes, no comments inside.
+      size_t open = spliced.find('(', i + 2);
+      std::string delim = open == std::string::npos ? "" : spliced.substr(i + 2, open - i - 2);
+      size_t close = open == std::string::npos ? std::string::npos : spliced.find(")" + delim + "\"", open + 1);
+      size_t end = close == std::string::npos ? n : close + delim.size() + 2;
+      out.strings.push_back({line[i], spliced.substr(i, end - i)});
+      for (size_t k = i; k < end; ++k) put(spliced[k], k, true);
+      i = end;
+    } else if (c == '"' || c == '\'') {
+      size_t k = i + 1;
+      while (k < n && spliced[k] != c && spliced[k] != '\n') k += spliced[k] == '\\' ? 2 : 1;
+      size_t end = std::min(n, k + 1);
+      if (c == '"') out.strings.push_back({line[i], spliced.substr(i, end - i)});
+      // Kept as written: #include "x.h" reads its header name from here.
+      for (size_t k2 = i; k2 < end; ++k2) put(spliced[k2], k2, true);
+      i = end;
+    } else {
+      put(c, i);
+      ++i;
+    }
+  }
+  return out;
+}
+
+bool ident_char(char c) { return std::isalnum((unsigned char)c) || c == '_'; }
+
+std::string trim(const std::string& s) {
+  size_t a = s.find_first_not_of(" \t\r\f\v");
+  if (a == std::string::npos) return "";
+  size_t b = s.find_last_not_of(" \t\r\f\v");
+  return s.substr(a, b - a + 1);
+}
+
+void check_directive(const std::string& body, int line, const std::set<std::string>& framework, SourceScan* scan) {
+  size_t i = 0;
+  while (i < body.size() && ident_char(body[i])) ++i;
+  const std::string name = body.substr(0, i);
+  if (name != "include" && name != "include_next" && name != "import") return;
+  const std::string rest = trim(body.substr(i));
+  const std::string allowed = "only the C++ standard library, GLM (<glm/...>) and the framework's headers "
+                              "(\"core/vec.h\", \"render/pathtracer.h\", ...) may be included";
+  if (name != "include") {
+    scan->rejections.push_back({line, "#" + name + " " + rest + ": " + allowed + ", with #include"});
+    return;
+  }
+  const bool angled = rest.size() > 2 && rest.front() == '<' && rest.find('>') == rest.size() - 1;
+  const bool quoted = rest.size() > 2 && rest.front() == '"' && rest.find('"', 1) == rest.size() - 1;
+  if (!angled && !quoted) {
+    scan->rejections.push_back(
+        {line, "#include " + rest + ": the header name must be written out as <name> or \"name\"; " + allowed});
+    return;
+  }
+  const std::string header = rest.substr(1, rest.size() - 2);
+  const bool ok = header.find("..") == std::string::npos && header.front() != '/' &&
+                  (is_standard_header(header) || framework.count(header) > 0 || (angled && is_glm_header(header)));
+  if (!ok) scan->rejections.push_back({line, "#include " + rest + ": " + allowed});
+}
+
+// Identifiers worth an instructor's look, with what they may be for.
+const std::map<std::string, std::string>& flagged_identifiers() {
+  static const std::map<std::string, std::string> m = [] {
+    std::map<std::string, std::string> t;
+    for (const char* s : {"fork", "vfork", "clone", "clone3", "daemon", "setsid"}) t[s] = "creates or detaches processes";
+    for (const char* s : {"execl", "execle", "execlp", "execv", "execve", "execvp", "execvpe", "fexecve", "system",
+                          "popen", "posix_spawn", "posix_spawnp"})
+      t[s] = "runs another program";
+    for (const char* s : {"kill", "killpg", "tgkill", "raise"}) t[s] = "sends signals";
+    for (const char* s : {"ptrace", "process_vm_readv", "process_vm_writev", "prctl"}) t[s] = "inspects or changes processes";
+    t["syscall"] = "makes raw system calls";
+    for (const char* s : {"asm", "__asm", "__asm__"}) t[s] = "inline assembly";
+    for (const char* s : {"dlsym", "dlvsym", "dlopen"}) t[s] = "looks up symbols at run time";
+    for (const char* s : {"getenv", "secure_getenv", "setenv", "putenv", "unsetenv", "environ"})
+      t[s] = "reads or changes the environment";
+    for (const char* s : {"ofstream", "fstream", "fopen", "freopen", "fwrite", "fputs", "fprintf", "open", "openat",
+                          "creat", "write", "pwrite", "rename", "unlink", "mkdir", "filesystem", "mmap", "dup2"})
+      t[s] = "file output or descriptors";
+    for (const char* s : {"exit", "_exit", "_Exit", "quick_exit", "atexit", "at_quick_exit", "abort", "terminate"})
+      t[s] = "ends the process";
+    for (const char* s : {"signal", "sigaction", "setjmp", "longjmp", "siglongjmp"}) t[s] = "handles signals or jumps";
+    for (const char* s : {"constructor", "destructor", "init_priority"}) t[s] = "code that runs before or after main";
+    t["grading"] = "names the grader's test support (pt::grading)";
+    t["testing"] = "names GoogleTest's internals (::testing)";
+    t["main"] = "names main";
+    return t;
+  }();
+  return m;
+}
+
+}  // namespace
+
+bool is_standard_header(const std::string& name) { return standard_headers().count(name) > 0; }
+
+SourceScan scan_task_source(const std::string& text, const std::set<std::string>& framework_headers) {
+  SourceScan scan;
+  if (text.find('\0') != std::string::npos) {
+    scan.rejections.push_back({1, "the file holds a NUL byte: not a C++ source file"});
+    return scan;
+  }
+  const Cleaned c = clean(text);
+  // Directives: a logical line whose first token is # or %:.
+  size_t start = 0;
+  while (start < c.text.size()) {
+    size_t end = c.text.find('\n', start);
+    if (end == std::string::npos) end = c.text.size();
+    size_t first = c.text.find_first_not_of(" \t\r\f\v", start);
+    // A line that starts inside a raw string literal is not a directive.
+    const bool in_literal = first < end && c.literal[first];
+    std::string l = in_literal ? "" : trim(c.text.substr(start, end - start));
+    std::string body;
+    if (l.rfind("#", 0) == 0) body = trim(l.substr(1));
+    else if (l.rfind("%:", 0) == 0) body = trim(l.substr(2));
+    else l.clear();
+    if (!l.empty()) check_directive(body, c.line_of[start], framework_headers, &scan);
+    start = end + 1;
+  }
+  // Identifiers (outside comments and literals).
+  const auto& flagged = flagged_identifiers();
+  std::set<std::pair<int, std::string>> seen;
+  auto flag = [&](int line, const std::string& what) {
+    if (seen.insert({line, what}).second) scan.flags.push_back({line, what});
+  };
+  const std::string& t = c.text;
+  for (size_t i = 0; i < t.size();) {
+    if (c.literal[i] || !ident_char(t[i]) || std::isdigit((unsigned char)t[i])) {
+      ++i;
+      continue;
+    }
+    size_t j = i;
+    while (j < t.size() && ident_char(t[j]) && !c.literal[j]) ++j;
+    const std::string id = t.substr(i, j - i);
+    const int line = c.line_of[i];
+    size_t k = j;
+    while (k < t.size() && std::isspace((unsigned char)t[k])) ++k;
+    const bool call = k < t.size() && t[k] == '(';
+    // `test` alone is a common word; pt::test and `namespace test` are not.
+    size_t b = i;
+    while (b > 0 && std::isspace((unsigned char)t[b - 1])) --b;
+    const bool qualified = b >= 2 && t[b - 1] == ':' && t[b - 2] == ':';
+    const bool after_namespace = b >= 9 && t.compare(b - 9, 9, "namespace") == 0;
+    if (id == "test" && (qualified || after_namespace)) flag(line, "test: names the grader's test support (pt::test)");
+    auto it = flagged.find(id);
+    if (it != flagged.end() && (id != "main" || call) && (id != "open" || call) && (id != "write" || call))
+      flag(line, id + ": " + it->second);
+    if (id == "__has_include") flag(line, "__has_include: probes which files exist");
+    i = j;
+  }
+  for (const auto& [line, s] : c.strings)
+    if (s.find("/proc") != std::string::npos) flag(line, "\"/proc\": reads the process's own files");
+  std::sort(scan.flags.begin(), scan.flags.end(),
+            [](const SourceFinding& a, const SourceFinding& b) { return a.line < b.line; });
+  return scan;
+}
+
+}  // namespace pt::grade
