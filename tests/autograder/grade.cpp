@@ -18,6 +18,7 @@
 #include "checks.h"
 #include "grade_part.h"
 #include "manifest.h"
+#include "redact.h"
 #include "report.h"
 #include "sandbox.h"
 
@@ -91,6 +92,7 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
   }
   // Read once, before any code under test runs, and never again.
   const auto manifest = load_manifest(opt.manifest);
+  const Redactor redactor(manifest ? manifest->solution_lines : std::set<uint64_t>());
   Sandbox sandbox(opt.sandbox);
   Report report = start_report(sandbox);
   auto save = [&] {
@@ -118,7 +120,8 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
       report.notes.push_back("part " + std::to_string(numbers[i]) + ": " + paths[i] + " not found, not graded");
       continue;
     }
-    report.parts[i] = grade_binary(numbers[i], paths[i], tests[i], opt.limits, sandbox, paths[i] + ".grade.log");
+    report.parts[i] = grade_binary(numbers[i], paths[i], tests[i], opt.limits, sandbox, paths[i] + ".grade.log",
+                                   redactor);
     save();  // the run's processes are all dead by now: nothing of it outlives this write
   }
   report.complete = true;
@@ -139,12 +142,14 @@ PartResult grade_one(int part, const std::string& binary, const Options& opt) {
   Sandbox sandbox(opt.sandbox);
   std::vector<std::string> notes;
   const PartManifest tests = tests_of(part, binary, manifest.get(), sandbox, notes);
-  PartResult r = grade_binary(part, binary, tests, opt.limits, sandbox, binary + ".grade.log");
+  PartResult r = grade_binary(part, binary, tests, opt.limits, sandbox, binary + ".grade.log",
+                              Redactor(manifest ? manifest->solution_lines : std::set<uint64_t>()));
   r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
   return r;
 }
 
-int write_manifest_from(const std::string& out, const std::vector<std::string>& listed) {
+int write_manifest_from(const std::string& out, const std::vector<std::string>& listed,
+                        const std::vector<std::string>& solution_files) {
   SandboxOptions plain;
   plain.confine = false;  // the all-reference binaries are the grader's own
   Sandbox sandbox(plain);
@@ -158,6 +163,8 @@ int write_manifest_from(const std::string& out, const std::vector<std::string>& 
     m.parts[part] = list_tests(part, binary, sandbox);
     sources[part] = fs::path(binary).filename().string();
   }
+  for (const auto& file : solution_files)
+    for (uint64_t h : line_fingerprints(file)) m.solution_lines.insert(h);
   write_manifest(out, m, sources);
   return 0;
 }
@@ -257,11 +264,14 @@ int main(int argc, char** argv) {
   mutant_cmd->add_flag("--fail-fast", opt.limits.stop_at_first_failure, "stop at the first failing test");
 
   std::string manifest_out;
-  std::vector<std::string> listed;
+  std::vector<std::string> listed, solution_files;
   CLI::App* manifest_cmd =
       app.add_subcommand("manifest", "write the manifest from trusted (all-reference) test binaries");
   manifest_cmd->add_option("--out", manifest_out, "the manifest to write")->required()->type_name("FILE");
   manifest_cmd->add_option("BINARIES", listed, "each part's all-reference test binary")->required()->type_name("N=FILE");
+  manifest_cmd->add_option("--solution", solution_files, "files whose lines must never reach a report")
+      ->type_name("FILE...")
+      ->check(CLI::ExistingFile);
 
   CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
   sandbox_cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
@@ -282,7 +292,7 @@ int main(int argc, char** argv) {
   try {
     if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
     if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
-    if (*manifest_cmd) return write_manifest_from(manifest_out, listed);
+    if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
     if (*sandbox_cmd) return print_sandbox(opt.sandbox);
     std::map<int, std::string> binaries;
     for (const auto& b : binary_args) {

@@ -121,7 +121,7 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
 }
 
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
-                        Sandbox& sandbox, const std::string& log_path) {
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor) {
   PartResult res = pending_part(part, tests, "no verdict");
   res.binary = binary;
   res.log = log_path;
@@ -233,6 +233,12 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     }
   }
   res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  size_t redacted = 0;
+  for (auto& t : res.tests) redacted += redactor.redact(t.message) + redactor.redact(t.output);
+  if (redacted > 0)
+    res.notes.push_back(std::to_string(redacted) +
+                        " line(s) of the solution were removed from the tests' messages: the submission printed "
+                        "solution text (read its task file)");
 
   if (res.runs > 1)
     res.notes.push_back("the binary was started " + std::to_string(res.runs) + " times: " + std::to_string(crashed) +

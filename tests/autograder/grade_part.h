@@ -14,6 +14,7 @@
 
 #include "exit_status.h"
 #include "manifest.h"
+#include "redact.h"
 #include "sandbox.h"
 
 namespace pt::grade {
@@ -55,8 +56,9 @@ struct PartResult {
 PartResult pending_part(int part, const PartManifest& tests, const std::string& why);
 
 // Grades `binary` as part `part`. The log (when not empty) receives each run's
-// command line and the output kept from it.
+// command line and the output kept from it, as it was; the messages and output
+// in the result have the solution's lines removed (redact.h).
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
-                        Sandbox& sandbox, const std::string& log_path);
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor());
 
 }  // namespace pt::grade

@@ -1,6 +1,7 @@
 #include "manifest.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -92,6 +93,8 @@ Manifest read_manifest(const std::string& path) {
       for (const auto& t : tests) p.push_back(parse_test(part, t));
       check_unique(p);
     }
+    for (const auto& h : doc.value("solution_lines", json::array()))
+      m.solution_lines.insert(std::stoull(h.get<std::string>(), nullptr, 16));
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
@@ -106,7 +109,13 @@ void write_manifest(const std::string& path, const Manifest& manifest, const std
     parts[std::to_string(part)] = list;
   }
   for (const auto& [part, binary] : sources) from[std::to_string(part)] = binary;
-  const json doc = {{"format", "pt-grade manifest 1"}, {"listed_by", from}, {"parts", parts}};
+  json lines = json::array();
+  for (uint64_t h : manifest.solution_lines) {
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    lines.push_back(hex);
+  }
+  const json doc = {{"format", "pt-grade manifest 1"}, {"listed_by", from}, {"parts", parts}, {"solution_lines", lines}};
   write_file_atomically(path, doc.dump(2) + "\n");
 }
 

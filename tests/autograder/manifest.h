@@ -4,7 +4,9 @@
 // binaries (which hold no student code) with `pt-grade manifest`; pt-grade
 // reads it once, before any code under test runs. Nothing a binary under test
 // prints or reports can add a test, drop one or change its points.
+#include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,7 @@ using PartManifest = std::vector<ManifestTest>;
 
 struct Manifest {
   std::map<int, PartManifest> parts;
+  std::set<uint64_t> solution_lines;  // fingerprints of the solution's lines (redact.h)
 };
 
 double max_score(const PartManifest& tests);
@@ -32,7 +35,8 @@ PartManifest parse_listing(int part, const std::string& text);
 // Reads a manifest file; throws std::runtime_error naming the file and the fault.
 Manifest read_manifest(const std::string& path);
 
-// Writes it atomically (temporary file, then rename).
+// Writes it atomically (temporary file, then rename). `sources` names the
+// binary each part was listed from.
 void write_manifest(const std::string& path, const Manifest& manifest, const std::map<int, std::string>& sources);
 
 }  // namespace pt::grade

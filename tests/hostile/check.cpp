@@ -11,10 +11,11 @@
 // not change after the grader has finished; and no line of a reference file
 // appears in it. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer the
 // case needs is missing here), 2 could not check.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -28,41 +29,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "command.h"
+
 namespace {
 
 using nlohmann::json;
+using pt::grade::run_command;
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-int run_command(const std::vector<std::string>& argv, std::string* output) {
-  int fds[2];
-  if (::pipe(fds) != 0) return -1;
-  std::fflush(stdout);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::dup2(fds[1], 1);
-    if (!output) ::dup2(2, 1);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    ::execv(args[0], args.data());
-    ::_exit(127);
-  }
-  ::close(fds[1]);
-  char buf[4096];
-  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;)
-    if (output) output->append(buf, static_cast<size_t>(n));
-  ::close(fds[0]);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 // Lines of a solution file worth looking for: long enough to be code, not a
@@ -77,6 +55,24 @@ std::vector<std::string> telling_lines(const std::string& text) {
     if (line.size() >= 24 && line.rfind("#include", 0) != 0) lines.push_back(line);
   }
   return lines;
+}
+
+// The binary a `--binary N=FILE` argument names.
+std::string binary_graded(const std::vector<std::string>& command) {
+  for (size_t i = 0; i + 1 < command.size(); ++i)
+    if (command[i] == "--binary") return command[i + 1].substr(command[i + 1].find('=') + 1);
+  return "";
+}
+
+// Processes running `binary` now.
+int survivors(const std::string& binary) {
+  int n = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc", ec)) {
+    const std::string cmdline = read_file(entry.path().string() + "/cmdline");
+    n += !cmdline.empty() && cmdline.c_str() == binary;
+  }
+  return n;
 }
 
 struct Checker {
@@ -142,14 +138,22 @@ int main(int argc, char** argv) {
   }
 
   ::unlink(results_path.c_str());
-  std::fflush(stdout);
-  const int status = run_command(command, nullptr);
+  const double kill_after = expect.value("kill_grader_after", 0.0);
+  const int status = run_command(command, nullptr, kill_after);
   const std::string written = read_file(results_path);
+  const std::string binary = binary_graded(command);
   std::this_thread::sleep_for(std::chrono::duration<double>(expect.value("settle_seconds", 0.0)));
   const std::string settled = read_file(results_path);
 
   Checker c;
-  c.expect(status == 0, "the grader exited with status " + std::to_string(status) + ", not 0");
+  const int want_status = kill_after > 0 ? 128 + SIGKILL : 0;
+  c.expect(status == want_status,
+           "the grader exited with status " + std::to_string(status) + ", not " + std::to_string(want_status));
+  // A grader that returns has killed every process of its runs; one that is
+  // killed takes them with it within moments (the warden's death signal).
+  if (kill_after > 0) std::this_thread::sleep_for(std::chrono::seconds(1));
+  const int left = binary.empty() ? 0 : survivors(binary);
+  c.expect(left == 0, std::to_string(left) + " process(es) of the graded binary outlived the grader");
   c.expect(!written.empty(), "no results.json at " + results_path);
   c.expect(settled == written, "results.json changed after the grader had finished");
   json results;
@@ -159,7 +163,9 @@ int main(int argc, char** argv) {
     c.expect(false, std::string("results.json does not parse: ") + e.what());
   }
   const json& pt = results.is_object() ? results["extra_data"]["pt_grade"] : json();
-  c.expect(pt.is_object() && pt.value("complete", false), "results.json does not say the grading completed");
+  c.expect(pt.is_object() && pt.value("complete", false) == (kill_after == 0),
+           kill_after > 0 ? "results.json says it is complete, yet the grader was killed"
+                          : "results.json does not say the grading completed");
 
   std::map<std::string, json> listed;
   for (const auto& t : results.value("tests", json::array()))
