@@ -12,7 +12,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "landlock.h"
@@ -129,16 +131,49 @@ bool place_descriptors(const ChildArgs& a) {
 
 }  // namespace
 
-void kill_descendants() {
-  for (int round = 0; round < 10000; ++round) {
-    std::ifstream in("/proc/self/task/" + std::to_string(::gettid()) + "/children");
-    std::vector<pid_t> left;
-    for (pid_t pid; in >> pid;) left.push_back(pid);
-    if (left.empty()) break;
-    for (pid_t pid : left) ::kill(pid, SIGKILL);
-    for (pid_t pid : left) ::waitpid(pid, nullptr, 0);
+std::set<pid_t> children_of(pid_t pid) {
+  std::set<pid_t> found;
+  std::error_code ec;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", ec)) {
+    std::ifstream in(task.path() / "children");
+    for (pid_t child; in >> child;) found.insert(child);
   }
-  while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+  return found;
+}
+
+void kill_descendants(const std::set<pid_t>& spare) {
+  auto tree = [&] {
+    std::set<pid_t> found;
+    std::vector<pid_t> todo;
+    for (pid_t child : children_of(::getpid()))
+      if (!spare.count(child)) todo.push_back(child);
+    while (!todo.empty()) {
+      const pid_t pid = todo.back();
+      todo.pop_back();
+      if (!found.insert(pid).second) continue;
+      for (pid_t child : children_of(pid)) todo.push_back(child);
+    }
+    return found;
+  };
+  // Stop the whole tree first: a stopped process cannot fork, so a fork bomb
+  // cannot refill what is killed. Walk again until no new process shows up.
+  std::set<pid_t> stopped;
+  for (int round = 0; round < 1000; ++round) {
+    bool grew = false;
+    for (pid_t pid : tree())
+      if (stopped.insert(pid).second) {
+        ::kill(pid, SIGSTOP);
+        grew = true;
+      }
+    if (!grew) break;
+  }
+  for (pid_t pid : stopped) ::kill(pid, SIGKILL);
+  // They die; the orphans among them are handed to this subreaper to reap.
+  for (int round = 0; round < 100000; ++round) {
+    std::set<pid_t> left = children_of(::getpid());
+    for (pid_t pid : spare) left.erase(pid);
+    if (left.empty()) break;
+    for (pid_t pid : left) ::waitpid(pid, nullptr, 0);
   }
 }
 
@@ -169,10 +204,16 @@ void warden_main(const ChildArgs& a) {
     const pid_t pid = ::waitpid(-1, &status, 0);
     if (pid == test || (pid < 0 && errno != EINTR)) break;
   }
-  // What the run left behind: in a PID namespace its PID 1 kills all the
-  // rest at once; as a subreaper it has inherited every orphan.
-  if (p.pid_ns) ::kill(-1, SIGKILL);
-  kill_descendants();
+  // What the run left behind. As PID 1 of its namespace, kill(-1) reaches
+  // every other process in it at once (and /proc may not show them by their
+  // pids here); as a subreaper, it has inherited every orphan.
+  if (p.pid_ns) {
+    ::kill(-1, SIGKILL);
+    while (::waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
+    }
+  } else {
+    kill_descendants({});
+  }
   say(a, "exit " + std::to_string(status));
   ::_exit(0);
 }

@@ -12,6 +12,7 @@
 // in a real run it ends the run before any code under test starts.
 #include <sys/types.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,12 @@ struct ChildArgs {
 
 [[noreturn]] void warden_main(const ChildArgs& args);
 
-// For a child subreaper: kills its children until none is left, which reaches
-// every descendant (each orphan is handed to it), and reaps them.
-void kill_descendants();
+// The children of a process (all its threads'), from /proc.
+std::set<pid_t> children_of(pid_t pid);
+
+// For a child subreaper outside the run's PID namespace: stops every
+// descendant but the `spare` children and theirs, kills them all, and reaps
+// what is handed to it.
+void kill_descendants(const std::set<pid_t>& spare);
 
 }  // namespace pt::grade::confine

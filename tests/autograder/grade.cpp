@@ -210,6 +210,14 @@ int main(int argc, char** argv) {
         return *end == '\0' && v > 0 && v <= 1e6 ? "" : "expected a number of seconds in (0, 1e6], got " + text;
       },
       "");
+  auto add_sandbox_choice = [&](CLI::App* cmd) {
+    cmd->add_option("--sandbox-without", opt.sandbox.without, "leave out these layers, to test the fallbacks")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"namespaces", "user", "landlock", "seccomp"}))
+        ->type_name("LAYER,...");
+    cmd->add_flag("--no-sandbox", [&](std::int64_t) { opt.sandbox.confine = false; },
+                  "run the code under test with only its limits, session and subreaper (debugging only)");
+  };
   auto add_grading = [&](CLI::App* cmd) {
     cmd->add_option("--manifest", opt.manifest, "the trusted list of graded tests (pt-grade manifest)")
         ->type_name("FILE")
@@ -227,8 +235,12 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     cmd->add_option("--sandbox-read", opt.sandbox.readable, "a path the code under test may read (repeatable)")
         ->type_name("PATH");
-    cmd->add_flag("--no-sandbox", [&](std::int64_t) { opt.sandbox.confine = false; },
-                  "run the code under test as a plain child process (debugging only)");
+    cmd->add_option("--sandbox-processes", opt.sandbox.limits.processes,
+                    "processes and threads the code under test may have, where that can be counted")
+        ->check(CLI::Range(8, 100000))
+        ->type_name("N")
+        ->capture_default_str();
+    add_sandbox_choice(cmd);
   };
 
   std::string build_dir = "build", json_path;
@@ -276,6 +288,7 @@ int main(int argc, char** argv) {
   CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
   sandbox_cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
       ->type_name("USER");
+  add_sandbox_choice(sandbox_cmd);
 
   // `run` is the default: insert it when the first argument is an option.
   std::vector<char*> args(argv, argv + argc);

@@ -38,7 +38,12 @@ size_t Redactor::redact(std::string& text) const {
   if (fingerprints_.empty() || text.empty()) return 0;
   std::istringstream in(text);
   std::string out;
-  size_t replaced = 0;
+  size_t replaced = 0, run = 0;  // a run of removed lines becomes one marker
+  auto close_run = [&] {
+    if (run > 0)
+      out += "[pt-grade: " + std::to_string(run) + (run == 1 ? " line" : " lines") + " of the solution removed here]\n";
+    run = 0;
+  };
   for (std::string line; std::getline(in, line);) {
     uint64_t h;
     // A line may carry a prefix ("C++ exception with description \"..."):
@@ -47,11 +52,16 @@ size_t Redactor::redact(std::string& text) const {
     for (size_t from = line.find_first_of("\"':"); !hit && from != std::string::npos;
          from = line.find_first_of("\"':", from + 1))
       hit = fingerprint(line.substr(from + 1), &h) && fingerprints_.count(h);
-    out += hit ? "[pt-grade: a line of the solution was removed here]" : line;
-    out += '\n';
     replaced += hit;
+    if (hit) {
+      ++run;
+      continue;
+    }
+    close_run();
+    out += line + '\n';
   }
-  if (!text.empty() && text.back() != '\n') out.pop_back();
+  close_run();
+  if (!text.empty() && text.back() != '\n' && !out.empty()) out.pop_back();
   text = std::move(out);
   return replaced;
 }

@@ -185,6 +185,8 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   if (plan.user_ns) flags |= CLONE_NEWUSER;
   if (plan.pid_ns) flags |= CLONE_NEWPID;
   if (plan.mount_ns) flags |= CLONE_NEWNS;
+  // Children the caller already had are not the run's: never killed.
+  const std::set<pid_t> before = confine::children_of(::getpid());
   const auto start = Clock::now();
   // fork() with namespaces: the child is PID 1 of the new PID namespace.
   const pid_t warden = static_cast<pid_t>(::syscall(SYS_clone, flags, nullptr, nullptr, nullptr, 0));
@@ -234,7 +236,8 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   while (::waitpid(warden, &warden_status, 0) < 0 && errno == EINTR) {
   }
   g_warden = 0;
-  confine::kill_descendants();  // without a PID namespace, orphans of a killed warden come here
+  // Without a PID namespace, whatever the killed warden left is handed here.
+  if (!plan.pid_ns) confine::kill_descendants(before);
   drain(output.read.fd, keep_output);
   if (!verdicts_eof) drain(verdicts.read.fd, to_observer);
   drain(status.read.fd, to_status);
@@ -333,8 +336,14 @@ void Sandbox::probe() {
     return;
   }
   const bool root = ::geteuid() == 0;
+  auto wanted = [&](const char* layer) {
+    return std::find(options_.without.begin(), options_.without.end(), layer) == options_.without.end();
+  };
+  const std::string turned_off = ": left out (--sandbox-without)";
   std::string user_note;
-  if (root) {
+  if (root && !wanted("user")) {
+    user_note = "unprivileged user" + turned_off + " (the code under test runs as root)";
+  } else if (root) {
     if (const passwd* pw = ::getpwnam(options_.user.c_str())) {
       p.switch_user = true;
       p.uid = pw->pw_uid;
@@ -352,6 +361,18 @@ void Sandbox::probe() {
   std::string ns_note, tmpfs_note, proc_note, landlock_note, seccomp_note;
   if (p.landlock_abi == 0) landlock_note = "Landlock: this kernel does not offer it";
   if (!p.seccomp) seccomp_note = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
+  if (!wanted("namespaces")) {
+    p.user_ns = p.pid_ns = p.mount_ns = p.tmpfs = p.proc = false;
+    ns_note = "namespaces" + turned_off;
+  }
+  if (!wanted("landlock")) {
+    p.landlock_abi = 0;
+    landlock_note = "Landlock" + turned_off;
+  }
+  if (!wanted("seccomp")) {
+    p.seccomp = false;
+    seccomp_note = "seccomp" + turned_off;
+  }
 
   char self[4096];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);

@@ -43,6 +43,9 @@ struct SandboxOptions {
   bool confine = true;             // false: a plain child process (trusted binaries, debugging)
   std::string user = "nobody";     // who runs the code when the grader is root
   std::vector<std::string> readable;  // paths it may read besides the system's (/usr, /lib, /etc, ...)
+  // Layers to leave out even where they work ("namespaces", "user", "landlock",
+  // "seccomp"): how the fallbacks are tested on a machine that has them all.
+  std::vector<std::string> without;
   SandboxLimits limits;
 };
 
@@ -81,7 +84,9 @@ class Sandbox {
   Sandbox& operator=(const Sandbox&) = delete;
 
   // Runs the binary to its end or its deadline; every process it started is
-  // dead when this returns.
+  // dead when this returns. (This process becomes a child subreaper: without
+  // a PID namespace, the run's orphans are handed to it and killed; children
+  // it had before the run are left alone.)
   RunOutcome run(const RunRequest& request, RunObserver& observer);
 
   const std::vector<std::string>& layers() const { return active_; }  // e.g. "PID namespace"

@@ -2,7 +2,10 @@
 // `--` and checks that the results.json it wrote is honest (README.md).
 //
 //   pt-hostile-check --case DIR --manifest FILE --results FILE --source-dir DIR
-//                    --pt-grade PT_GRADE -- GRADING COMMAND...
+//                    --pt-grade PT_GRADE [--fallback] -- GRADING COMMAND...
+//
+// --fallback: the command leaves sandbox layers out (expect.json's
+// "fallback"), and the case needs the layers that "fallback" lists instead.
 //
 // Honest means: the grader survived; every graded test of the part is listed
 // with the manifest's points (the maximum never shrinks); the tests of the
@@ -87,6 +90,7 @@ struct Checker {
 int main(int argc, char** argv) {
   std::string case_dir, manifest_path, results_path, source_dir, pt_grade;
   std::vector<std::string> command;
+  bool fallback = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](std::string& out) {
@@ -97,6 +101,7 @@ int main(int argc, char** argv) {
     else if (a == "--results") value(results_path);
     else if (a == "--source-dir") value(source_dir);
     else if (a == "--pt-grade") value(pt_grade);
+    else if (a == "--fallback") fallback = true;
     else if (a == "--") {
       command.assign(argv + i + 1, argv + argc);
       break;
@@ -120,14 +125,21 @@ int main(int argc, char** argv) {
 
   // A case that needs a layer this machine does not offer is skipped before
   // it runs: a fork bomb is not something to try without a process limit.
-  if (expect.contains("needs")) {
+  const json needs = fallback ? expect["fallback"].value("needs", json::array()) : expect.value("needs", json::array());
+  if (!needs.empty()) {
+    std::vector<std::string> query{pt_grade, "sandbox"};
+    for (size_t i = 0; i < command.size(); ++i)  // the sandbox the command asks for
+      if (command[i] == "--no-sandbox")
+        query.push_back(command[i]);
+      else if ((command[i] == "--sandbox-without" || command[i] == "--sandbox-user") && i + 1 < command.size())
+        query.insert(query.end(), {command[i], command[i + 1]});
     std::string info;
-    if (run_command({pt_grade, "sandbox"}, &info) != 0) {
+    if (run_command(query, &info) != 0) {
       std::fprintf(stderr, "pt-hostile-check: %s sandbox failed\n", pt_grade.c_str());
       return 2;
     }
     const json layers = json::parse(info);
-    for (const auto& need : expect["needs"]) {
+    for (const auto& need : needs) {
       const auto& ids = layers.at("ids");
       if (std::find(ids.begin(), ids.end(), need) == ids.end()) {
         std::printf("SKIPPED: this case needs the sandbox layer \"%s\", which this machine does not offer (%s)\n",
