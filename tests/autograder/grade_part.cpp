@@ -5,6 +5,7 @@
 #include <deque>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "verdicts.h"
@@ -137,6 +138,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
   const bool submission_first = limits.deadline < part_budget_end;
   const auto part_end = std::min(part_budget_end, limits.deadline);
   size_t ignored = 0, unknown = 0, timed_out = 0, crashed = 0;
+  std::set<std::string> hung_tasks;
   int threads_at_main = 0;
   uint64_t output_bytes = 0;
   auto unresolved = [&] {
@@ -160,8 +162,14 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
                                          " was used up (by " + std::to_string(timed_out) + " test(s) that hung)");
       break;
     }
+    // The tests of a task that has hung wait until every other test has run:
+    // the budget they may use up is then only theirs to lose.
+    std::vector<TestResult*> next;
+    for (TestResult* t : left)
+      if (!hung_tasks.count(t->test.task)) next.push_back(t);
+    if (next.empty()) next = left;
     std::string filter = "--gtest_filter=";
-    for (const TestResult* t : left) filter += t->test.name + (t == left.back() ? "" : ":");
+    for (const TestResult* t : next) filter += t->test.name + (t == next.back() ? "" : ":");
     RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no"}, make_key()};
     if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
     RunWatch watch(request.key, limits, part_end, submission_first);
@@ -204,6 +212,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
                                                     : why_died(run.exit, watch, limits);
       t.output = last_lines(run.output);
       (hung ? timed_out : crashed) += 1;
+      if (hung) hung_tasks.insert(t.test.task);
       ++resolved;
     }
 
@@ -226,7 +235,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
                   "no verdict: the binary " + why_died(run.exit, watch, limits) + " without running this test");
       break;
     }
-    if (s.done() && !unresolved().empty()) {
+    if (s.done() && next.size() == left.size() && !unresolved().empty()) {
       charge_rest(TestResult::Status::NoVerdict,
                   "no verdict: the binary finished without running this test (is the manifest from another build?)");
       break;

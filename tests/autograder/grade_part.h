@@ -5,8 +5,8 @@
 // filter naming the tests that have no verdict yet. A test that starts and
 // does not end within the per-test limit, or takes the process down, is
 // charged with that and only that; the binary then starts again on the tests
-// left. A part's runs share one time budget, and the tests it does not reach
-// score nothing, with the reason. Only the manifest says which tests exist
+// left, those of a task that has hung last. A part's runs share one time
+// budget, and the tests it does not reach score nothing, with the reason. Only the manifest says which tests exist
 // and what they are worth: a test without a verdict fails, and a binary that
 // reports nothing scores 0 of the part's full maximum.
 #include <string>

@@ -79,7 +79,7 @@ void write_results_json(const std::string& path, const Report& report) {
                         {{"part", p.part}, {"test", t.test.name}, {"task", t.test.task}, {"result", t.status_name()}}}});
     }
     parts[std::to_string(p.part)] = {
-        {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}};
+        {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}, {"seconds", p.seconds}};
   }
   std::string text;
   for (const auto& n : all_notes(report)) text += n + "\n";
