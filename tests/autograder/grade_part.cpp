@@ -252,7 +252,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
   if (res.runs > 1)
     res.notes.push_back("the binary was started " + std::to_string(res.runs) + " times: " + std::to_string(crashed) +
                         " test(s) crashed and " + std::to_string(timed_out) +
-                        " hung, each charged alone, and the tests after them ran again");
+                        " hung; each was charged alone and the binary restarted on the tests left");
   if (threads_at_main > 1)
     res.notes.push_back(std::to_string(threads_at_main - 1) +
                         " thread(s) were already running when the test main started: only a static initializer in "
