@@ -11,7 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libstb-dev libtinyexr-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev libarchive-dev zip
-  libboost-math-dev
+  libboost-math-dev libseccomp-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -222,17 +222,24 @@ SourceScan scan_task_source(const std::string& text, const std::set<std::string>
     // `test` alone is a common word; pt::test and `namespace test` are not.
     size_t b = i;
     while (b > 0 && std::isspace((unsigned char)t[b - 1])) --b;
-    const bool qualified = b >= 2 && t[b - 1] == ':' && t[b - 2] == ':';
+    const bool after_pt = b >= 4 && t.compare(b - 4, 4, "pt::") == 0;
+    const bool before_scope = k + 1 < t.size() && t[k] == ':' && t[k + 1] == ':';
     const bool after_namespace = b >= 9 && t.compare(b - 9, 9, "namespace") == 0;
-    if (id == "test" && (qualified || after_namespace)) flag(line, "test: names the grader's test support (pt::test)");
+    if (id == "test" && (after_pt || before_scope || after_namespace))
+      flag(line, "test: names the grader's test support (pt::test)");
     auto it = flagged.find(id);
     if (it != flagged.end() && (id != "main" || call) && (id != "open" || call) && (id != "write" || call))
       flag(line, id + ": " + it->second);
     if (id == "__has_include") flag(line, "__has_include: probes which files exist");
     i = j;
   }
-  for (const auto& [line, s] : c.strings)
+  for (const auto& [line, s] : c.strings) {
     if (s.find("/proc") != std::string::npos) flag(line, "\"/proc\": reads the process's own files");
+    // In an asm statement these make the assembler read a file while the
+    // submission is built (.incbin copies any file into the binary).
+    if (s.find("incbin") != std::string::npos || s.find(".include") != std::string::npos)
+      scan.rejections.push_back({line, "the assembler directive .incbin or .include reads a file at compile time"});
+  }
   std::sort(scan.flags.begin(), scan.flags.end(),
             [](const SourceFinding& a, const SourceFinding& b) { return a.line < b.line; });
   return scan;

@@ -4,7 +4,9 @@
 //
 //  * Rejections: an #include of anything but the C++ standard library, GLM
 //    and the framework's headers; #include_next and #import; an #include whose
-//    header name is computed by a macro or cannot be read plainly. A rejected
+//    header name is computed by a macro or cannot be read plainly; the
+//    assembler's .incbin or .include in a string (asm statements read files
+//    at compile time with them). A rejected
 //    file is not compiled: its part scores 0, with the reasons.
 //  * Flags, for an instructor to read (they never change a score): process
 //    control (fork, exec*, kill, ptrace, syscall, exit), asm, dlsym, "/proc",

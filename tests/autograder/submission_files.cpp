@@ -54,7 +54,7 @@ bool read_folder(const fs::path& root, std::vector<Entry>* entries, std::vector<
     const fs::file_status st = it->symlink_status(ec);
     if (fs::is_directory(st)) continue;
     Entry e;
-    e.path = fs::relative(it->path(), root, ec).generic_string();
+    e.path = it->path().lexically_relative(root).generic_string();  // of the link, not its target
     e.regular = fs::is_regular_file(st);
     if (e.regular && !is_metadata(e.path)) e.text = read_prefix(it->path());
     entries->push_back(std::move(e));

@@ -52,6 +52,8 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
       // A block comment spanning lines is one space: the directive goes on.
       {"#include /*\n*/ \"../reference/x.cpp\"\n", 1},
       {"%:include \"../reference/x.cpp\"\n", 1},
+      {"int x;\nasm(\".incbin \\\"/work/main/reference/part1.cpp\\\"\");\n", 2},
+      {"asm(\".include \\\"x.s\\\"\");\n", 1},
   };
   for (const auto& c : cases) {
     SourceScan s = scan_task_source(c.src, kFramework);
@@ -89,7 +91,7 @@ TEST(SourceScan, FlagsWhatAnInstructorShouldRead) {
       "void m() { std::ofstream o(\"x\"); }\n"                       // 10
       "__attribute__((constructor)) void n() {}\n"                   // 11
       "namespace pt::grading { bool register_test(); }\n"            // 12
-      "namespace pt::test { int seed; }\n"                           // 13
+      "namespace pt { namespace test { int seed; } }\n"              // 13
       "int main(int, char**) { return 0; }\n"                        // 14
       "void o() { std::exit(0); }\n"                                 // 15
       "void p() { ptrace(0, 0, 0, 0); }\n";                          // 16
@@ -110,6 +112,7 @@ TEST(SourceScan, OrdinaryTaskCodeRaisesNoFlag) {
       "namespace pt {\n"
       "const char* msg = \"kill the ray, then exit\";\n"
       "double test_value(double main_t) { double write = main_t; return write; }\n"
+      "bool Sphere::test(const Ray& ray, double& t1, double& t2) const { return test_value(t1) > 0; }\n"
       "}\n";
   SourceScan s = scan_task_source(src, kFramework);
   EXPECT_TRUE(s.flags.empty()) << lines(s.flags);

@@ -1,6 +1,6 @@
 # Writes the student release or the grading kit (cmake -P; see CMakeLists.txt).
 #   -DMODE=student|kit -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
-#   kit only: -DMANIFEST=<graded tests, JSON lines> -DPT_GRADE=<pt-grade binary>
+#   kit only: -DMANIFEST=<graded_manifest.json> -DPT_GRADE=<pt-grade> -DPT_LINK_GUARD=<pt-link-guard>
 # Every file is chosen by an allowlist: what is not named here is not shipped.
 cmake_minimum_required(VERSION 3.22)
 foreach(v MODE SOURCE_DIR BINARY_DIR OUT)
@@ -72,7 +72,7 @@ if(MODE STREQUAL "student")
   endforeach()
   copy_file(${S}/tools/release/README.prebuilt.md prebuilt/README.md)
 elseif(MODE STREQUAL "kit")
-  foreach(v MANIFEST PT_GRADE)
+  foreach(v MANIFEST PT_GRADE PT_LINK_GUARD)
     if(NOT DEFINED ${v})
       message(FATAL_ERROR "export.cmake: MODE kit needs -D${v}=...")
     endif()
@@ -89,6 +89,8 @@ elseif(MODE STREQUAL "kit")
   copy_tree(scenes EXCLUDE ${scene_excludes})
   copy_file(${MANIFEST} manifest.json)
   copy_file(${PT_GRADE} bin/pt-grade)
+  copy_file(${PT_LINK_GUARD} bin/pt-link-guard)
+  copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
   file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
   foreach(lib IN LISTS libs)
     get_filename_component(name ${lib} NAME)

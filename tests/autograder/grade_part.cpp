@@ -1,0 +1,274 @@
+#include "grade_part.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "verdicts.h"
+
+namespace pt::grade {
+namespace {
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", s);
+  return buf;
+}
+
+// The last lines a dying test printed, without GoogleTest's banners.
+std::string last_lines(const std::string& output, size_t max_lines = 12) {
+  std::deque<std::string> lines;
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("[==", 0) == 0 || line.rfind("[--", 0) == 0 || line.rfind("[ RUN", 0) == 0 ||
+        line.rfind("Note: Google Test filter", 0) == 0 || line.empty())
+      continue;
+    lines.push_back(line.size() > 240 ? line.substr(0, 240) + " ..." : line);
+    if (lines.size() > max_lines) lines.pop_front();
+  }
+  std::string out;
+  for (const auto& l : lines) out += (out.empty() ? "" : "\n") + l;
+  return out;
+}
+
+// Follows one run's records and decides its deadline: the per-test limit,
+// counted from the last record (so start-up and the gaps between tests are
+// bounded too), or the part's budget, whichever comes first.
+class RunWatch : public RunObserver {
+ public:
+  RunWatch(std::string key, const GradeLimits& limits, Clock::time_point part_end, bool part_end_is_submission)
+      : stream_(std::move(key)), limits_(limits), part_end_(part_end), submission_(part_end_is_submission) {}
+
+  void on_channel(std::string_view bytes) override {
+    if (stream_.feed(bytes) > 0) last_record_ = Clock::now();
+  }
+  Deadline deadline() const override {
+    const auto test_end = last_record_ + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(limits_.test_seconds));
+    if (test_end <= part_end_) return {test_end, limits_.test_seconds};
+    budget_hit_ = true;
+    return {part_end_, limits_.part_seconds};
+  }
+  const VerdictStream& stream() const { return stream_; }
+  // The deadline in force was the budget, not the per-test limit.
+  bool budget_hit() const { return budget_hit_ && Clock::now() >= part_end_; }
+  bool submission_budget() const { return submission_; }
+
+ private:
+  VerdictStream stream_;
+  const GradeLimits& limits_;
+  Clock::time_point part_end_;
+  bool submission_;
+  Clock::time_point last_record_ = Clock::now();
+  mutable bool budget_hit_ = false;
+};
+
+std::string why_died(const Exit& e, const RunWatch& watch, const GradeLimits& limits) {
+  if (e.how != Exit::How::TimedOut) return e.describe();
+  if (!watch.budget_hit()) return "timed out after " + seconds_text(limits.test_seconds) + " (the limit per test)";
+  return watch.submission_budget() ? "stopped: the submission's time budget ran out during this test"
+                                   : "stopped: the part's time budget of " + seconds_text(limits.part_seconds) +
+                                         " ran out during this test";
+}
+
+}  // namespace
+
+const char* TestResult::status_name() const {
+  switch (status) {
+    case Status::Passed:
+      return "passed";
+    case Status::Failed:
+      return "failed";
+    case Status::Skipped:
+      return "skipped";
+    case Status::Crashed:
+      return "crashed";
+    case Status::TimedOut:
+      return "timed-out";
+    case Status::NoVerdict:
+      return "no-verdict";
+    case Status::NotRun:
+      break;
+  }
+  return "not-run";
+}
+
+double PartResult::earned() const {
+  double sum = 0;
+  for (const auto& t : tests) sum += t.passed() ? t.test.points : 0;
+  return sum;
+}
+
+double PartResult::possible() const {
+  double sum = 0;
+  for (const auto& t : tests) sum += t.test.points;
+  return sum;
+}
+
+PartResult pending_part(int part, const PartManifest& tests, const std::string& why) {
+  PartResult r;
+  r.part = part;
+  for (const auto& t : tests) {
+    TestResult tr;
+    tr.test = t;
+    tr.message = why;
+    r.tests.push_back(std::move(tr));
+  }
+  return r;
+}
+
+PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor) {
+  PartResult res = pending_part(part, tests, "no verdict");
+  res.binary = binary;
+  res.log = log_path;
+  res.graded = true;
+  std::map<std::string, size_t> index;
+  for (size_t i = 0; i < res.tests.size(); ++i) index[res.tests[i].test.name] = i;
+  std::ofstream log;
+  if (!log_path.empty()) log.open(log_path, std::ios::trunc);
+
+  const auto start = Clock::now();
+  const auto part_budget_end =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.part_seconds));
+  const bool submission_first = limits.deadline < part_budget_end;
+  const auto part_end = std::min(part_budget_end, limits.deadline);
+  size_t ignored = 0, unknown = 0, timed_out = 0, crashed = 0;
+  std::set<std::string> hung_tasks;
+  int threads_at_main = 0;
+  uint64_t output_bytes = 0;
+  auto unresolved = [&] {
+    std::vector<TestResult*> left;
+    for (auto& t : res.tests)
+      if (t.status == TestResult::Status::NotRun) left.push_back(&t);
+    return left;
+  };
+  auto charge_rest = [&](TestResult::Status status, const std::string& why) {
+    for (TestResult* t : unresolved()) {
+      t->status = status;
+      t->message = why;
+    }
+  };
+
+  for (std::vector<TestResult*> left = unresolved(); !left.empty(); left = unresolved()) {
+    if (Clock::now() >= part_end) {
+      charge_rest(TestResult::Status::NotRun,
+                  submission_first ? "not run: the submission's time budget was used up"
+                                   : "not run: the part's time budget of " + seconds_text(limits.part_seconds) +
+                                         " was used up (by " + std::to_string(timed_out) + " test(s) that hung)");
+      break;
+    }
+    // The tests of a task that has hung wait until every other test has run:
+    // the budget they may use up is then only theirs to lose.
+    std::vector<TestResult*> next;
+    for (TestResult* t : left)
+      if (!hung_tasks.count(t->test.task)) next.push_back(t);
+    if (next.empty()) next = left;
+    std::string filter = "--gtest_filter=";
+    for (const TestResult* t : next) filter += t->test.name + (t == next.back() ? "" : ":");
+    RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no"}, make_key()};
+    if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
+    RunWatch watch(request.key, limits, part_end, submission_first);
+    const RunOutcome run = sandbox.run(request, watch);
+    ++res.runs;
+    output_bytes += run.output_bytes;
+    if (log) {
+      log << "===== pt-grade: run " << res.runs << ": " << binary;
+      for (const auto& a : request.args) log << " " << (a.size() > 200 ? a.substr(0, 200) + "..." : a);
+      log << "\n" << run.output << "\n===== pt-grade: run " << res.runs << " " << run.exit.describe() << "\n"
+          << std::flush;
+    }
+
+    const VerdictStream& s = watch.stream();
+    ignored += s.ignored();
+    threads_at_main = std::max(threads_at_main, s.threads_at_main());
+    size_t resolved = 0;
+    for (const Verdict& v : s.verdicts()) {
+      auto it = index.find(v.test);
+      if (it == index.end()) {
+        ++unknown;
+        continue;
+      }
+      TestResult& t = res.tests[it->second];
+      if (t.status != TestResult::Status::NotRun) continue;
+      t.status = v.passed ? TestResult::Status::Passed
+                 : v.skipped ? TestResult::Status::Skipped
+                             : TestResult::Status::Failed;
+      t.message = v.message;
+      if (t.status == TestResult::Status::Skipped) t.message = "skipped (a skipped test earns no points)";
+      if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
+      t.seconds = v.seconds;
+      ++resolved;
+    }
+    if (auto it = index.find(s.running()); it != index.end() && res.tests[it->second].status == TestResult::Status::NotRun) {
+      TestResult& t = res.tests[it->second];
+      const bool hung = run.exit.how == Exit::How::TimedOut;
+      t.status = hung ? TestResult::Status::TimedOut : TestResult::Status::Crashed;
+      t.message = run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
+                                                    : why_died(run.exit, watch, limits);
+      t.output = last_lines(run.output);
+      (hung ? timed_out : crashed) += 1;
+      if (hung) hung_tasks.insert(t.test.task);
+      ++resolved;
+    }
+
+    bool failed = false;
+    for (const auto& t : res.tests)
+      failed = failed || t.died() || t.status == TestResult::Status::Failed;
+    if (limits.stop_at_first_failure && failed) {
+      charge_rest(TestResult::Status::NotRun, "not run: grading stopped at the first failing test");
+      break;
+    }
+    if (!s.hello()) {
+      charge_rest(TestResult::Status::NoVerdict, "no verdict: the binary " + why_died(run.exit, watch, limits) +
+                                                     " before its test main started");
+      res.notes.push_back("the binary reported nothing: it " + run.exit.describe() +
+                          " before its test main started (a static initializer?)");
+      break;
+    }
+    if (resolved == 0) {
+      charge_rest(TestResult::Status::NoVerdict,
+                  "no verdict: the binary " + why_died(run.exit, watch, limits) + " without running this test");
+      break;
+    }
+    if (s.done() && next.size() == left.size() && !unresolved().empty()) {
+      charge_rest(TestResult::Status::NoVerdict,
+                  "no verdict: the binary finished without running this test (is the manifest from another build?)");
+      break;
+    }
+  }
+  res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  size_t redacted = 0;
+  for (auto& t : res.tests) redacted += redactor.redact(t.message) + redactor.redact(t.output);
+  if (redacted > 0)
+    res.notes.push_back(std::to_string(redacted) +
+                        " line(s) of the solution were removed from the tests' messages: the submission printed "
+                        "solution text (read its task file)");
+
+  if (res.runs > 1)
+    res.notes.push_back("the binary was started " + std::to_string(res.runs) + " times: " + std::to_string(crashed) +
+                        " test(s) crashed and " + std::to_string(timed_out) +
+                        " hung; each was charged alone and the binary restarted on the tests left");
+  if (threads_at_main > 1)
+    res.notes.push_back(std::to_string(threads_at_main - 1) +
+                        " thread(s) were already running when the test main started: only a static initializer in "
+                        "the submission can start one (read its task file)");
+  if (ignored > 0)
+    res.notes.push_back(std::to_string(ignored) +
+                        " line(s) on the verdict channel did not carry the run's key and were ignored: only code under "
+                        "test writes such lines (read its task file)");
+  if (unknown > 0)
+    res.notes.push_back(std::to_string(unknown) +
+                        " verdict(s) for tests the manifest does not list were ignored (an out-of-date manifest? "
+                        "build the target graded_manifest)");
+  if (output_bytes > (1u << 20))
+    res.notes.push_back("the binary printed " + std::to_string(output_bytes >> 20) +
+                        " MiB; the log keeps only the head and the tail of each run");
+  return res;
+}
+
+}  // namespace pt::grade

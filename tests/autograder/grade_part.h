@@ -1,0 +1,64 @@
+#pragma once
+// Grading one part's test binary against the manifest's list of its tests.
+//
+// The binary runs in the sandbox with a verdict channel and a GoogleTest
+// filter naming the tests that have no verdict yet. A test that starts and
+// does not end within the per-test limit, or takes the process down, is
+// charged with that and only that; the binary then starts again on the tests
+// left, those of a task that has hung last. A part's runs share one time
+// budget, and the tests it does not reach score nothing, with the reason. Only the manifest says which tests exist
+// and what they are worth: a test without a verdict fails, and a binary that
+// reports nothing scores 0 of the part's full maximum.
+#include <string>
+#include <vector>
+
+#include "exit_status.h"
+#include "manifest.h"
+#include "redact.h"
+#include "sandbox.h"
+
+namespace pt::grade {
+
+struct GradeLimits {
+  double test_seconds = 20;   // one test: from its start to its end (also start-up and between tests)
+  double part_seconds = 100;  // every run of one part's binary together
+  Clock::time_point deadline = Clock::time_point::max();  // the submission's budget
+  bool stop_at_first_failure = false;  // check-mutant needs one failing test, not all
+};
+
+struct TestResult {
+  enum class Status { Passed, Failed, Skipped, Crashed, TimedOut, NoVerdict, NotRun };
+  ManifestTest test;
+  Status status = Status::NotRun;
+  std::string message;  // GoogleTest's failure text, or why there is no verdict
+  std::string output;   // the last lines it printed, when it took the process down
+  double seconds = 0;
+
+  bool passed() const { return status == Status::Passed; }
+  bool died() const { return status == Status::Crashed || status == Status::TimedOut; }
+  const char* status_name() const;  // "passed", "crashed", "not-run", ...
+};
+
+struct PartResult {
+  int part = 0;
+  std::string binary, log;
+  bool graded = false;  // false: not graded (yet)
+  std::vector<TestResult> tests;
+  std::vector<std::string> notes;  // what an instructor should know about this binary
+  int runs = 0;
+  double seconds = 0;
+
+  double earned() const;
+  double possible() const;
+};
+
+// A part before it is graded: every test 0 of its points, with `why`.
+PartResult pending_part(int part, const PartManifest& tests, const std::string& why);
+
+// Grades `binary` as part `part`. The log (when not empty) receives each run's
+// command line and the output kept from it, as it was; the messages and output
+// in the result have the solution's lines removed (redact.h).
+PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor());
+
+}  // namespace pt::grade

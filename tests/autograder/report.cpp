@@ -1,0 +1,158 @@
+#include "report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.h"
+
+namespace pt::grade {
+namespace {
+
+using nlohmann::json;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string points_text(double v) { return fmt(v) + (v == 1 ? " point" : " points"); }
+
+std::string first_lines(const std::string& text, size_t count, const std::string& indent) {
+  std::string out;
+  size_t pos = 0, shown = 0;
+  while (pos < text.size() && shown < count) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(pos, std::min<size_t>(end - pos, 240));
+    out += indent + line + (end - pos > 240 ? " ..." : "") + "\n";
+    pos = end + 1;
+    ++shown;
+  }
+  if (pos < text.size()) {
+    const auto rest = std::count(text.begin() + static_cast<long>(pos), text.end(), '\n') + 1;
+    out += indent + "... (" + std::to_string(rest) + " more lines)\n";
+  }
+  return out;
+}
+
+struct Tally {
+  int passed = 0, total = 0;
+  double earned = 0, possible = 0;
+  void add(const TestResult& t) {
+    ++total;
+    passed += t.passed();
+    earned += t.passed() ? t.test.points : 0;
+    possible += t.test.points;
+  }
+  std::string tests() const { return std::to_string(passed) + " / " + std::to_string(total); }
+  std::string points() const { return fmt(earned) + " / " + fmt(possible); }
+};
+
+std::vector<std::string> all_notes(const Report& report) {
+  std::vector<std::string> notes = report.notes;
+  for (const auto& p : report.parts)
+    for (const auto& n : p.notes) notes.push_back("part " + std::to_string(p.part) + ": " + n);
+  return notes;
+}
+
+}  // namespace
+
+void write_results_json(const std::string& path, const Report& report) {
+  json tests = json::array(), parts = json::object();
+  double score = 0;
+  for (const auto& p : report.parts) {
+    for (const auto& t : p.tests) {
+      std::string output = t.passed() ? "" : t.message;
+      if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + t.output;
+      score += t.passed() ? t.test.points : 0;
+      tests.push_back({{"name", t.test.task + " " + t.test.name},
+                       {"score", t.passed() ? t.test.points : 0.0},
+                       {"max_score", t.test.points},
+                       {"status", t.passed() ? "passed" : "failed"},
+                       {"output", output},
+                       {"visibility", t.test.hidden ? "after_published" : "visible"},
+                       {"extra_data",
+                        {{"part", p.part}, {"test", t.test.name}, {"task", t.test.task}, {"result", t.status_name()}}}});
+    }
+    parts[std::to_string(p.part)] = {
+        {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}, {"seconds", p.seconds}};
+  }
+  if (!report.instructor_notes.empty()) {
+    std::string flags;
+    for (const auto& n : report.instructor_notes) flags += n + "\n";
+    tests.push_back({{"name", "Instructor: source flags"},
+                     {"score", 0.0},
+                     {"max_score", 0.0},
+                     {"status", "passed"},
+                     {"output", flags},
+                     {"visibility", "hidden"}});
+  }
+  std::string text;
+  for (const auto& n : all_notes(report)) text += n + "\n";
+  json doc = {{"score", score},
+              {"execution_time", std::round(report.seconds * 10) / 10},
+              {"tests", tests},
+              {"extra_data",
+               {{"pt_grade",
+                 {{"complete", report.complete},
+                  {"parts", parts},
+                  {"sandbox",
+                   {{"layers", report.sandbox_layers},
+                    {"missing", report.sandbox_missing},
+                    {"ids", report.sandbox_ids}}}}}}}};
+  if (!text.empty()) doc["output"] = text;
+  // Messages are whatever the tests printed: never let bad UTF-8 stop the report.
+  write_file_atomically(path, doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+}
+
+void print_report(const Report& report, bool show_hidden) {
+  std::printf("\n%-6s %-14s %-14s %s\n", "part", "tests passed", "points", "");
+  Tally all;
+  for (const auto& p : report.parts) {
+    Tally part, hidden;
+    for (const auto& t : p.tests) {
+      part.add(t);
+      all.add(t);
+      if (t.test.hidden) hidden.add(t);
+    }
+    std::string extra =
+        hidden.total == 0 ? "" : "including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points";
+    if (!p.graded) extra = "not graded";
+    std::printf("%-6d %-14s %-14s %s\n", p.part, part.tests().c_str(), part.points().c_str(), extra.c_str());
+  }
+  std::printf("%-6s %-14s %s\n", "total", all.tests().c_str(), all.points().c_str());
+
+  bool header = false;
+  for (const auto& p : report.parts) {
+    bool failed = false;
+    for (const auto& t : p.tests) {
+      if (t.passed()) continue;
+      if (!header) std::printf("\nFailed graded tests:\n");
+      header = failed = true;
+      if (t.test.hidden && !show_hidden) {
+        std::printf("  %s (hidden test, %s)\n", t.test.task.c_str(), points_text(t.test.points).c_str());
+        continue;
+      }
+      std::printf("  %s %s%s (%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
+                  points_text(t.test.points).c_str());
+      std::fputs(first_lines(t.message, 6, "      ").c_str(), stdout);
+      if (!t.output.empty()) {
+        std::printf("      last output:\n");
+        std::fputs(first_lines(t.output, 12, "      | ").c_str(), stdout);
+      }
+    }
+    if (failed && !p.log.empty()) std::printf("      (part %d output: %s)\n", p.part, p.log.c_str());
+  }
+  if (!report.instructor_notes.empty()) std::printf("\nFor the instructor (no effect on the score):\n");
+  for (const auto& n : report.instructor_notes) std::fputs(first_lines(n, 12, "  ").c_str(), stdout);
+  const auto notes = all_notes(report);
+  if (!notes.empty()) std::printf("\nNotes:\n");
+  for (const auto& n : notes) std::fputs(first_lines(n, 4, "  ").c_str(), stdout);
+  std::fflush(stdout);
+}
+
+}  // namespace pt::grade

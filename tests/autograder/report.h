@@ -1,0 +1,32 @@
+#pragma once
+// What a grading produced, and its two renderings: the score table a person
+// reads in a terminal, and Gradescope's results.json.
+#include <string>
+#include <vector>
+
+#include "grade_part.h"
+
+namespace pt::grade {
+
+struct Report {
+  std::vector<PartResult> parts;
+  std::vector<std::string> notes;  // for the instructor: missing binaries, sandbox layers missing, ...
+  // For the instructor's eyes only (the source flags of pt-grade submission):
+  // in results.json as a hidden test worth nothing, never shown to students.
+  std::vector<std::string> instructor_notes;
+  std::vector<std::string> sandbox_layers, sandbox_missing, sandbox_ids;
+  double seconds = 0;
+  bool complete = false;  // every part graded (false while grading, or after a budget ran out)
+};
+
+// Writes Gradescope's results.json atomically (temporary file, rename): a
+// reader, or a grader killed half-way, sees one whole report or the previous
+// one. Every test of every part is listed with its points, graded or not.
+// Throws std::runtime_error when the file cannot be written.
+void write_results_json(const std::string& path, const Report& report);
+
+// The score table, the failed tests with their messages (hidden ones by task
+// only, unless show_hidden) and the notes, on stdout.
+void print_report(const Report& report, bool show_hidden);
+
+}  // namespace pt::grade

@@ -1,0 +1,317 @@
+#include "submission.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "command.h"
+#include "manifest.h"
+#include "redact.h"
+#include "report.h"
+#include "source_scan.h"
+#include "submission_files.h"
+
+namespace pt::grade {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The kit's tasks/ holds the untouched stubs: their names are the names a
+// submission's files must have.
+std::map<int, std::string> task_file_names(const fs::path& kit) {
+  std::map<int, std::string> names;
+  for (const auto& e : fs::directory_iterator(kit / "tasks")) {
+    const std::string name = e.path().filename().string();
+    int part = 0;
+    if (std::sscanf(name.c_str(), "part%d_", &part) == 1 && e.path().extension() == ".cpp") names[part] = name;
+  }
+  return names;
+}
+
+std::set<std::string> framework_headers(const fs::path& kit) {
+  std::set<std::string> headers;
+  const fs::path include = kit / "include";
+  for (const auto& e : fs::recursive_directory_iterator(include))
+    if (e.is_regular_file()) headers.insert(fs::relative(e.path(), include).generic_string());
+  return headers;
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", s);
+  return buf;
+}
+
+std::string shell_quoted(const std::string& word) {
+  std::string q = "'";
+  for (char c : word) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs a trusted build command (cmake, ninja: the compiler on untrusted
+// source) with a wall-clock limit for its whole process group (coreutils
+// `timeout`) and a 4 GiB address-space limit (util-linux `prlimit`); standard
+// error joins standard output. Exit status 124 or 137: the time ran out.
+int run_build_command(const std::vector<std::string>& argv, double seconds, std::string* output) {
+  char secs[32];
+  std::snprintf(secs, sizeof secs, "%.1f", seconds);
+  std::string cmd = "exec timeout --kill-after=5 " + std::string(secs) + " prlimit --as=" + std::to_string(4ull << 30) + " --";
+  for (const auto& a : argv) cmd += " " + shell_quoted(a);
+  return run_command({"/bin/sh", "-c", cmd + " 2>&1"}, output);
+}
+
+// What a failed build printed that a student needs: the compiler's errors
+// first (with the lines that locate them), ninja's progress lines dropped.
+std::string compiler_errors(const std::string& output, const fs::path& tree, size_t max_lines = 40) {
+  std::istringstream in(output);
+  std::vector<std::string> kept;
+  const std::string prefix = tree.string() + "/";
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("[", 0) == 0 && line.find("] ") != std::string::npos && line.find("Building") != std::string::npos)
+      continue;
+    if (line.rfind("ninja: build stopped", 0) == 0 || line.rfind("FAILED: ", 0) == 0) continue;
+    if (line.find("/usr/bin/c++") != std::string::npos || line.find("/usr/bin/g++") != std::string::npos) continue;
+    // Paths relative to the tree: tasks/part1_...cpp:12:3: error: ...
+    for (size_t at; (at = line.find(prefix)) != std::string::npos;) line.erase(at, prefix.size());
+    kept.push_back(line.size() > 300 ? line.substr(0, 300) + " ..." : line);
+  }
+  // Start at the first error, if there is one (the compiler's, the linker's or
+  // pt-link-guard's).
+  size_t first = 0;
+  for (size_t i = 0; i < kept.size(); ++i)
+    if (kept[i].find("error") != std::string::npos || kept[i].find("undefined reference") != std::string::npos ||
+        kept[i].find("multiple definition") != std::string::npos || kept[i].rfind("pt-link-guard:", 0) == 0) {
+      first = i > 0 && kept[i - 1].find("In function") != std::string::npos ? i - 1 : i;
+      break;
+    }
+  std::string text;
+  for (size_t i = first; i < kept.size() && i < first + max_lines; ++i) text += kept[i] + "\n";
+  if (kept.size() > first + max_lines) text += "... (" + std::to_string(kept.size() - first - max_lines) + " more lines)\n";
+  return text;
+}
+
+// Every file the compiler opened for the part's task file (ninja's record of
+// its dependency output), outside the folders a task file may read from.
+std::vector<std::string> unexpected_dependencies(const fs::path& tree, int part) {
+  std::string out;
+  run_command({"ninja", "-C", (tree / "build").string(), "-t", "deps"}, &out);
+  std::istringstream in(out);
+  const std::string object_marker = "student_part" + std::to_string(part) + ".dir/";
+  const std::vector<std::string> allowed = {(tree / "tasks").string() + "/", (tree / "include").string() + "/",
+                                            "/usr/include/", "/usr/lib/gcc/", "/usr/local/include/"};
+  std::vector<std::string> unexpected;
+  bool in_object = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    if (line[0] != ' ') {
+      in_object = line.find(object_marker) != std::string::npos;
+      continue;
+    }
+    if (!in_object) continue;
+    std::string dep = line.substr(line.find_first_not_of(' '));
+    fs::path p = fs::path(dep);
+    if (p.is_relative()) p = tree / "build" / p;
+    const std::string norm = p.lexically_normal().string();
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || norm.rfind(a, 0) == 0;
+    if (!ok) unexpected.push_back(norm);
+  }
+  return unexpected;
+}
+
+std::string joined_findings(const std::vector<SourceFinding>& found, const std::string& file) {
+  std::string text;
+  for (const auto& f : found) text += file + ":" + std::to_string(f.line) + ": " + f.what + "\n";
+  return text;
+}
+
+}  // namespace
+
+int grade_submission(const SubmissionOptions& opt) {
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt.budget_seconds));
+  const fs::path kit = fs::absolute(opt.kit);
+  if (!fs::is_regular_file(kit / "manifest.json") || !fs::is_directory(kit / "lib")) {
+    std::fprintf(stderr,
+                 "pt-grade: no grading kit at %s (build it with `cmake --build --preset default --target grader-kit`, "
+                 "or pass --kit)\n",
+                 kit.c_str());
+    return 2;
+  }
+  // Read once, before any code under test is built or run.
+  const Manifest manifest = read_manifest((kit / "manifest.json").string());
+  const Redactor redactor(manifest.solution_lines);
+  const std::map<int, std::string> expected = task_file_names(kit);
+
+  Report report;
+  for (const auto& [part, tests] : manifest.parts)
+    report.parts.push_back(pending_part(part, tests, "not graded yet: the grader stopped before this part"));
+  auto part_index = [&](int part) {
+    for (size_t i = 0; i < report.parts.size(); ++i)
+      if (report.parts[i].part == part) return i;
+    return report.parts.size();
+  };
+  auto save = [&] {
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!opt.json_path.empty()) write_results_json(opt.json_path, report);
+  };
+  auto set_part = [&](int part, const std::string& why) {
+    const size_t i = part_index(part);
+    if (i < report.parts.size()) report.parts[i] = pending_part(part, manifest.parts.at(part), why);
+  };
+  save();
+
+  // 2. The files.
+  const Submission sub = read_submission(opt.path, expected);
+  for (const auto& n : sub.notes) report.notes.push_back(n);
+  if (!sub.problems.empty()) {
+    std::string why = "submission rejected before building:";
+    for (const auto& p : sub.problems) why += "\n  " + p;
+    for (auto& p : report.parts) set_part(p.part, why);
+    report.notes.push_back(why);
+    report.complete = true;
+    save();
+    print_report(report, false);
+    return 0;
+  }
+  std::set<int> submitted;
+  for (const auto& f : sub.files) submitted.insert(f.part);
+  for (auto& p : report.parts)
+    if (!submitted.count(p.part))
+      set_part(p.part, "not submitted: no " + (expected.count(p.part) ? expected.at(p.part) : "task file") + " in the submission");
+
+  // 3. What each file may include, and what an instructor should read.
+  const std::set<std::string> headers = framework_headers(kit);
+  std::vector<const TaskFile*> buildable;
+  for (const auto& f : sub.files) {
+    if (!manifest.parts.count(f.part)) {
+      report.notes.push_back(f.where + ": part " + std::to_string(f.part) + " has no graded tests in this kit; not built");
+      continue;
+    }
+    if (f.too_large) {
+      set_part(f.part, f.where + " is larger than " + std::to_string(kMaxTaskFileBytes >> 20) +
+                           " MiB: rejected before building");
+      continue;
+    }
+    const SourceScan scan = scan_task_source(f.text, headers);
+    if (!scan.flags.empty())
+      report.instructor_notes.push_back("source flags in " + f.where + " (the score is not affected):\n" +
+                                        joined_findings(scan.flags, f.where));
+    if (!scan.rejections.empty()) {
+      set_part(f.part, f.where + " rejected before building:\n" + joined_findings(scan.rejections, f.where));
+      continue;
+    }
+    buildable.push_back(&f);
+  }
+  save();
+
+  // 4. A fresh tree: the kit (no solution source) and the task files.
+  fs::path work = opt.work.empty() ? fs::temp_directory_path() : fs::path(opt.work);
+  fs::create_directories(work);
+  std::string pattern = (work / "pt-submission-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) {
+    std::fprintf(stderr, "pt-grade: cannot create a folder in %s\n", work.c_str());
+    return 2;
+  }
+  const fs::path tree = pattern;
+  for (const char* item : {"CMakeLists.txt", "include", "lib", "src", "bin"})
+    fs::copy(kit / item, tree / item, fs::copy_options::recursive);
+  fs::create_directories(tree / "tasks");
+  std::string parts_list;
+  for (const TaskFile* f : buildable) {
+    std::ofstream(tree / "tasks" / f->name, std::ios::binary) << f->text;
+    parts_list += (parts_list.empty() ? "" : ";") + std::to_string(f->part);
+  }
+
+  std::map<int, std::string> binaries;
+  if (!buildable.empty()) {
+    std::string out;
+    const int rc = run_build_command({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
+                                      "-DPT_PARTS_SUBMITTED=" + parts_list},
+                                     120, &out);
+    if (rc != 0) {
+      std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", out.c_str());
+      for (const TaskFile* f : buildable) set_part(f->part, "not built: the grading kit could not be configured (an instructor must look)");
+      report.notes.push_back("cmake configure failed:\n" + out.substr(0, 4000));
+      buildable.clear();
+    }
+  }
+  for (const TaskFile* f : buildable) {
+    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+    if (left <= 1) {
+      set_part(f->part, "not built: the submission's time budget ran out");
+      continue;
+    }
+    const std::string target = "part" + std::to_string(f->part) + "_tests";
+    std::string out;
+    const auto build_start = Clock::now();
+    const int rc = run_build_command({"cmake", "--build", (tree / "build").string(), "--target", target},
+                                     std::min(opt.build_seconds, left), &out);
+    const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
+    if (rc != 0) {
+      const bool timed_out = rc == 124 || rc == 137;
+      std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
+                                  : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
+      why += compiler_errors(out, tree);
+      set_part(f->part, why);
+      continue;
+    }
+    const auto unexpected = unexpected_dependencies(tree, f->part);
+    if (!unexpected.empty()) {
+      std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
+                        "the standard library: rejected.\n";
+      for (const auto& u : unexpected) why += "  " + u + "\n";
+      set_part(f->part, why);
+      continue;
+    }
+    report.notes.push_back("part " + std::to_string(f->part) + ": built in " + seconds_text(std::round(took * 10) / 10));
+    binaries[f->part] = (tree / "build" / target).string();
+  }
+  save();
+
+  // 5. Grading, in the sandbox.
+  if (!binaries.empty()) {
+    SandboxOptions sandbox_options = opt.sandbox;
+    sandbox_options.readable.push_back((kit / "scenes").string());
+    Sandbox sandbox(sandbox_options);
+    report.sandbox_layers = sandbox.layers();
+    report.sandbox_missing = sandbox.layers_missing();
+    report.sandbox_ids = sandbox.layer_ids();
+    for (const auto& m : sandbox.layers_missing()) report.notes.push_back("sandbox layer missing: " + m);
+    GradeLimits limits = opt.limits;
+    limits.deadline = deadline;
+    for (const auto& [part, binary] : binaries) {
+      report.parts[part_index(part)] =
+          grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, binary + ".grade.log", redactor);
+      save();  // every process of that run is dead by now
+    }
+  }
+  report.complete = true;
+  save();
+  print_report(report, false);
+  if (!opt.keep_work) {
+    std::error_code ec;
+    fs::remove_all(tree, ec);
+  } else {
+    std::printf("build tree kept: %s\n", tree.c_str());
+  }
+  return 0;
+}
+
+}  // namespace pt::grade
