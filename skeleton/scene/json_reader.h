@@ -15,10 +15,12 @@ namespace pt {
 
 using json = nlohmann::json;
 
-// Parses a whole file. Throws SceneError "path: cannot open", "path:L:C: ..."
-// for syntax errors and numbers too large for a double, and
-// "path: /pointer: duplicate key" (nlohmann would silently keep the last).
-json parse_json_file(const std::string& path);
+// Parses a whole file of at most kMaxSceneFileBytes; `what` names it in errors
+// ("scene file", "camera file"). Throws SceneError "path: cannot open: ...",
+// "path:L:C: ..." for syntax errors, NUL bytes and numbers too large for a
+// double, and "path: /pointer: duplicate key" (nlohmann would silently keep
+// the last).
+json parse_json_file(const std::string& path, const char* what);
 
 // Line and column (1-based, in bytes) of a byte offset into `text`.
 struct TextPosition {
