@@ -95,7 +95,7 @@ void write_exr(const std::string& path, const Image& image) {
 Image read_exr(const std::string& path) {
   std::string file;
   try {
-    file = read_input_file(path, kMaxExrFileBytes, "EXR image");
+    file = read_input_file(path, kMaxExrFileBytes, "an EXR image");
   } catch (const SceneError& e) {
     throw std::runtime_error(e.what());
   }
@@ -114,8 +114,8 @@ Image read_exr(const std::string& path) {
   FreeEXRHeader(&header);
   if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxPixels)
     throw std::runtime_error(path + ": EXR of " + std::to_string(w) + "x" + std::to_string(h) +
-                             " pixels; at most " + std::to_string(kMaxImageSide) + " a side and " +
-                             std::to_string(kMaxPixels) + " in all");
+                             " pixels, more than a render may make (" + std::to_string(kMaxImageSide) +
+                             " a side, " + std::to_string(kMaxPixels) + " in all)");
 
   float* rgba = nullptr;
   int width = 0, height = 0;

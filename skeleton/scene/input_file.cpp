@@ -29,12 +29,12 @@ void check_input_path(const std::string& path, const char* what) {
   fs::file_status st = fs::status(path, ec);
   if (ec && ec != std::errc::no_such_file_or_directory) throw SceneError(path + ": cannot open: " + ec.message());
   if (!fs::exists(st)) throw SceneError(path + ": cannot open: no such file");
-  if (fs::is_directory(st)) throw SceneError(path + ": is a directory, not a " + what);
-  if (!fs::is_regular_file(st)) throw SceneError(path + ": is not a regular file (a " + what + " must be one)");
+  if (fs::is_directory(st)) throw SceneError(path + ": is a directory, not " + what);
+  if (!fs::is_regular_file(st)) throw SceneError(path + ": is not a regular file (" + what + " must be one)");
 }
 
 std::string read_input_file(const std::string& path, uint64_t max_bytes, const char* what) {
-  const std::string bound = std::string("larger than the ") + format_bytes(max_bytes) + " a " + what + " may have";
+  const std::string bound = std::string("larger than the ") + format_bytes(max_bytes) + " " + what + " may have";
   check_input_path(path, what);
   std::error_code ec;
   uint64_t size = fs::file_size(path, ec);

@@ -17,17 +17,17 @@ constexpr uint64_t kMaxSceneFileBytes = uint64_t(16) << 20;
 // OBJ is about 8 million triangles, far beyond the course's meshes.
 constexpr uint64_t kMaxMeshFileBytes = uint64_t(512) << 20;
 
-// "16 MiB", "2.0 GiB", "532 bytes": a size as a message shows it.
+// "16 MiB", "2 GiB", "532 bytes": a size as a message shows it.
 std::string format_bytes(uint64_t bytes);
 
 // Throws SceneError "path: ..." unless `path` names a regular file (following
-// symbolic links): missing, a directory, a device, a symlink loop.
+// symbolic links): missing, a directory, a device, a symlink loop. `what`
+// names the kind of file, with its article ("a scene file", "an EXR image").
 void check_input_path(const std::string& path, const char* what);
 
-// The whole of `path`. `what` names the kind of file for the message ("scene
-// file", "mesh file"). Throws SceneError "path: ..." when the path is missing,
-// a directory or not a regular file, unreadable, or larger than max_bytes (the
-// message gives both sizes).
+// The whole of `path`. Throws SceneError "path: ..." as check_input_path
+// does, when the file cannot be read, and when it is larger than max_bytes
+// (the message gives both sizes).
 std::string read_input_file(const std::string& path, uint64_t max_bytes, const char* what);
 
 }  // namespace pt

@@ -16,7 +16,7 @@ namespace pt {
 using json = nlohmann::json;
 
 // Parses a whole file of at most kMaxSceneFileBytes; `what` names it in errors
-// ("scene file", "camera file"). Throws SceneError "path: cannot open: ...",
+// ("a scene file", "a camera file"). Throws SceneError "path: cannot open: ...",
 // "path:L:C: ..." for syntax errors, NUL bytes and numbers too large for a
 // double, and "path: /pointer: duplicate key" (nlohmann would silently keep
 // the last).

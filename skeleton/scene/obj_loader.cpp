@@ -64,7 +64,7 @@ Vec3 MeshTransform::apply_to_normal(const Vec3& n) const {
 }
 
 Mesh load_obj(const std::string& path, const MeshTransform& transform, std::vector<std::string>* warnings) {
-  const std::string text = read_input_file(path, kMaxMeshFileBytes, "mesh file");
+  const std::string text = read_input_file(path, kMaxMeshFileBytes, "a mesh file");
   check_obj_text(text, path);
   StringStream in(text);
 

@@ -58,7 +58,7 @@ class JsonSceneLoader {
       : r_(path), dir_(fs::path(path).parent_path()), out_(out), scene_(out->scene) {}
 
   void load() {
-    json doc = parse_json_file(r_.file(), "scene file");
+    json doc = parse_json_file(r_.file(), "a scene file");
     r_.expect_object(doc, "", {"description", "camera", "materials", "lights", "shapes"});
     if (doc.contains("description")) r_.string(doc["description"], "/description");
     // Read even when absent, so that a scene without one gets the documented defaults.
@@ -232,7 +232,7 @@ std::string lowercase_extension(const std::string& path) {
 LoadedScene load_scene(const std::string& path) {
   LoadedScene out;
   std::string ext = lowercase_extension(path);
-  check_input_path(path, "scene file");
+  check_input_path(path, "a scene file");
   if (ext == ".json") JsonSceneLoader(path, &out).load();
   else throw SceneError(path + ": unknown scene format \"" + ext + "\" (expected .json)");
   return out;
@@ -240,7 +240,7 @@ LoadedScene load_scene(const std::string& path) {
 
 Camera load_camera(const std::string& path) {
   JsonReader r(path);
-  return read_camera(r, parse_json_file(path, "camera file"), "");
+  return read_camera(r, parse_json_file(path, "a camera file"), "");
 }
 
 }  // namespace pt
