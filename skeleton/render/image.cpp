@@ -46,6 +46,10 @@ void write_file(const std::string& path, const unsigned char* data, size_t size,
 // uncompressed) and then some for headers; anything larger is not ours.
 constexpr uint64_t kMaxExrFileBytes = uint64_t(kMaxPixels) * 16 + (uint64_t(1) << 20);
 
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  throw std::runtime_error(path + ": " + why);
+}
+
 std::string take_exr_error(const char* err) {
   std::string msg = err ? err : "unknown error";
   FreeEXRErrorMessage(err);
@@ -100,30 +104,59 @@ Image read_exr(const std::string& path) {
     throw std::runtime_error(e.what());
   }
   const auto* data = reinterpret_cast<const unsigned char*>(file.data());
-  // The size the header claims, checked before tinyexr allocates for it.
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, data, file.size()) != TINYEXR_SUCCESS)
-    throw std::runtime_error(path + ": not an EXR image (no EXR signature)");
+    refuse(path, "not an EXR image (no EXR signature)");
+  if (version.multipart || version.non_image || version.tiled)
+    refuse(path, "a multi-part, deep or tiled EXR (renders are single-part scanline images)");
+
+  // tinyexr's LoadEXRFromMemory leaks the header when the pixels fail to
+  // decode; here it is freed on every path.
   EXRHeader header;
   InitEXRHeader(&header);
+  std::unique_ptr<EXRHeader, int (*)(EXRHeader*)> header_owner(&header, &FreeEXRHeader);
   const char* err = nullptr;
   if (ParseEXRHeaderFromMemory(&header, &version, data, file.size(), &err) != TINYEXR_SUCCESS)
-    throw std::runtime_error(path + ": cannot read EXR header: " + take_exr_error(err));
+    refuse(path, "cannot read EXR header: " + take_exr_error(err));
+  // The size the header claims, checked before tinyexr allocates for it.
   const long long w = (long long)header.data_window.max_x - header.data_window.min_x + 1;
   const long long h = (long long)header.data_window.max_y - header.data_window.min_y + 1;
-  FreeEXRHeader(&header);
   if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxPixels)
-    throw std::runtime_error(path + ": EXR of " + std::to_string(w) + "x" + std::to_string(h) +
-                             " pixels, more than a render may make (" + std::to_string(kMaxImageSide) +
-                             " a side, " + std::to_string(kMaxPixels) + " in all)");
+    refuse(path, "EXR of " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than a render may make (" +
+                std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxPixels) + " in all)");
+  // tinyexr sizes its block-offset table by the chunkCount attribute when
+  // there is one (a 990-byte file asking for 2^31 blocks took 15 GB and
+  // 28 s), and allocates every channel at full size before decoding.
+  const int lines_per_block = header.compression_type == TINYEXR_COMPRESSIONTYPE_ZIP   ? 16
+                              : header.compression_type == TINYEXR_COMPRESSIONTYPE_PIZ ? 32
+                              : header.compression_type == TINYEXR_COMPRESSIONTYPE_ZFP ? 16
+                                                                                       : 1;
+  const long long blocks = (h + lines_per_block - 1) / lines_per_block;
+  if (header.chunk_count != 0 && header.chunk_count != blocks)
+    refuse(path, "EXR chunkCount " + std::to_string(header.chunk_count) + " disagrees with the image's " +
+                     std::to_string(blocks) + " blocks");
+  if (header.num_channels > 4)
+    refuse(path, "an EXR of " + std::to_string(header.num_channels) + " channels (renders have R, G, B and at most A)");
+  int rgb[3] = {-1, -1, -1};
+  for (int c = 0; c < header.num_channels; ++c) {
+    for (int k = 0; k < 3; ++k)
+      if (std::string(header.channels[c].name) == std::string(1, "RGB"[k])) rgb[k] = c;
+    if (header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT) refuse(path, "an EXR with integer channels");
+    header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;  // half channels too
+  }
+  if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) refuse(path, "an EXR without R, G and B channels");
 
-  float* rgba = nullptr;
-  int width = 0, height = 0;
-  if (LoadEXRFromMemory(&rgba, &width, &height, data, file.size(), &err) != TINYEXR_SUCCESS)
-    throw std::runtime_error(path + ": cannot read EXR: " + take_exr_error(err));
-  Image img(width, height);
-  for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Spectrum(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
-  free(rgba);
+  EXRImage exr;
+  InitEXRImage(&exr);
+  // On failure tinyexr has freed what it allocated (leaving the pointers).
+  if (LoadEXRImageFromMemory(&exr, &header, data, file.size(), &err) != TINYEXR_SUCCESS)
+    refuse(path, "cannot read EXR: " + take_exr_error(err));
+  std::unique_ptr<EXRImage, int (*)(EXRImage*)> image_owner(&exr, &FreeEXRImage);
+  if (exr.width != w || exr.height != h || !exr.images) refuse(path, "cannot read EXR: inconsistent image size");
+  Image img(exr.width, exr.height);
+  const float* planes[3];
+  for (int k = 0; k < 3; ++k) planes[k] = reinterpret_cast<const float*>(exr.images[rgb[k]]);
+  for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Spectrum(planes[0][i], planes[1][i], planes[2][i]);
   return img;
 }
 
