@@ -12,9 +12,10 @@ namespace pt {
 // A JSON scene or camera holds no geometry (meshes are separate files): the
 // largest shipped scene is 2 KiB, and 16 MiB is some 100,000 spheres.
 constexpr uint64_t kMaxSceneFileBytes = uint64_t(16) << 20;
-// Meshes (OBJ; COLLADA scenes carry theirs inline): the parsers hold several
-// times the file in memory (measured in tests/fuzz/README.md), and 512 MiB of
-// OBJ is about 8 million triangles, far beyond the course's meshes.
+// Meshes (OBJ; COLLADA scenes carry theirs inline): loading takes about 6
+// times the file in memory (453 MB for a 74 MB OBJ of 2 million triangles,
+// tests/cli/README.md), so 512 MiB (some 14 million triangles, far beyond the
+// course's meshes) is about 3 GB.
 constexpr uint64_t kMaxMeshFileBytes = uint64_t(512) << 20;
 
 // "16 MiB", "2 GiB", "532 bytes": a size as a message shows it.

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <charconv>
 #include <cstdlib>
 #include <string_view>
 #include <vector>
@@ -88,6 +89,7 @@ class ObjChecker {
  private:
   const std::string& path_;
   size_t line_ = 0;
+  std::vector<std::string_view> tokens_;
   Elements positions_{"vertex"}, texcoords_{"texture coordinate"}, normals_{"normal"};
 
   [[noreturn]] void fail(const std::string& message) const {
@@ -95,7 +97,8 @@ class ObjChecker {
   }
 
   void check_line(std::string_view line) {
-    std::vector<std::string_view> tokens;
+    std::vector<std::string_view>& tokens = tokens_;  // reused: no allocation per line
+    tokens.clear();
     for (size_t i = 0; i < line.size();) {
       if (line[i] == ' ' || line[i] == '\t') {
         ++i;
@@ -154,12 +157,16 @@ class ObjChecker {
     if (tokens.size() < 4)
       fail(std::string(what) + " needs 3 numbers (x y z), got " + std::to_string(tokens.size() - 1));
     for (size_t k = 1; k <= 3; ++k) {
-      std::string s(tokens[k]);
+      const std::string_view s = tokens[k];
       bool exponent_too_large;
-      if (!is_decimal(s, &exponent_too_large)) fail(std::string(what) + " value \"" + s + "\" is not a decimal number");
-      double v = std::strtod(s.c_str(), nullptr);
-      if (!std::isfinite(v) || std::abs(v) > kMaxMagnitude)
-        fail(std::string(what) + " value " + s + " is larger than 1e30 in magnitude");
+      if (!is_decimal(s, &exponent_too_large))
+        fail(std::string(what) + " value \"" + std::string(s) + "\" is not a decimal number");
+      // A decimal number: from_chars reads all of it (but for a leading '+').
+      double v = 0.0;
+      const size_t sign = s[0] == '+' ? 1 : 0;
+      auto [end, ec] = std::from_chars(s.data() + sign, s.data() + s.size(), v);
+      if (ec != std::errc() || !std::isfinite(v) || std::abs(v) > kMaxMagnitude)
+        fail(std::string(what) + " value " + std::string(s) + " is larger than 1e30 in magnitude");
     }
   }
 
@@ -183,19 +190,22 @@ class ObjChecker {
   }
 
   void check_index(std::string_view s, Elements& e, std::string_view corner) {
-    size_t i = s[0] == '-' || s[0] == '+' ? 1 : 0;
-    bool digits = i < s.size();
-    for (size_t k = i; k < s.size(); ++k) digits = digits && std::isdigit((unsigned char)s[k]);
-    const std::string where = " in face corner \"" + std::string(corner) + "\"";
-    if (!digits) fail(std::string(e.name) + " index \"" + std::string(s) + "\" is not an integer" + where);
-    // More than 10 digits cannot fit an int; tinyobjloader's atoi would wrap.
-    const long long index = s.size() - i > 10 ? LLONG_MAX : std::strtoll(std::string(s).c_str(), nullptr, 10);
-    if (index > INT_MAX || index < -INT_MAX)
-      fail(std::string(e.name) + " index " + std::string(s) + " is out of range" + where);
-    if (index == 0) fail(std::string(e.name) + " index 0" + where + " (OBJ counts from 1)");
+    auto bad = [&](const std::string& value, const std::string& why) {
+      fail(std::string(e.name) + " index " + value + " in face corner \"" + std::string(corner) + "\"" + why);
+    };
+    const size_t sign = s[0] == '+' ? 1 : 0;  // from_chars takes '-' only
+    long long index = 0;
+    auto [end, ec] = std::from_chars(s.data() + sign, s.data() + s.size(), index);
+    if (end != s.data() + s.size() || (ec != std::errc() && ec != std::errc::result_out_of_range) ||
+        (sign && s.size() > 1 && s[1] == '-'))
+      bad("\"" + std::string(s) + "\"", " is not an integer");
+    // tinyobjloader reads indices with atoi: beyond an int they would wrap.
+    if (ec == std::errc::result_out_of_range || index > INT_MAX || index < -INT_MAX)
+      bad(std::string(s), " is out of range");
+    if (index == 0) bad("0", " (OBJ counts from 1)");
     if (index < 0 && -index > e.count)
-      fail(std::string(e.name) + " index " + std::to_string(index) + where + " reaches before the first " + e.name +
-           " (the file has " + std::to_string(e.count) + " so far)");
+      bad(std::to_string(index),
+          std::string(" reaches before the first ") + e.name + " (the file has " + std::to_string(e.count) + " so far)");
     if (index > e.count) e.forward.push_back({line_, index});
   }
 };
