@@ -124,13 +124,18 @@ Image read_exr(const std::string& path) {
   if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxPixels)
     refuse(path, "EXR of " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than a render may make (" +
                 std::to_string(kMaxImageSide) + " a side, " + std::to_string(kMaxPixels) + " in all)");
+  // Only the codecs a render may be saved with: tinyexr 1.0.1 (Debian 12)
+  // reads past its buffer on damaged PIZ data (found by tests/fuzz; upstream
+  // syoyo/tinyexr#176), and our writer never uses PIZ.
+  const int codec = header.compression_type;
+  if (codec != TINYEXR_COMPRESSIONTYPE_NONE && codec != TINYEXR_COMPRESSIONTYPE_RLE &&
+      codec != TINYEXR_COMPRESSIONTYPE_ZIPS && codec != TINYEXR_COMPRESSIONTYPE_ZIP)
+    refuse(path, "an EXR compressed with codec " + std::to_string(codec) +
+                     " (PIZ and others are not read: save it uncompressed, RLE or ZIP)");
   // tinyexr sizes its block-offset table by the chunkCount attribute when
   // there is one (a 990-byte file asking for 2^31 blocks took 15 GB and
   // 28 s), and allocates every channel at full size before decoding.
-  const int lines_per_block = header.compression_type == TINYEXR_COMPRESSIONTYPE_ZIP   ? 16
-                              : header.compression_type == TINYEXR_COMPRESSIONTYPE_PIZ ? 32
-                              : header.compression_type == TINYEXR_COMPRESSIONTYPE_ZFP ? 16
-                                                                                       : 1;
+  const int lines_per_block = codec == TINYEXR_COMPRESSIONTYPE_ZIP ? 16 : 1;
   const long long blocks = (h + lines_per_block - 1) / lines_per_block;
   if (header.chunk_count != 0 && header.chunk_count != blocks)
     refuse(path, "EXR chunkCount " + std::to_string(header.chunk_count) + " disagrees with the image's " +
@@ -148,7 +153,9 @@ Image read_exr(const std::string& path) {
 
   EXRImage exr;
   InitEXRImage(&exr);
-  // On failure tinyexr has freed what it allocated (leaving the pointers).
+  // On a decode error tinyexr frees the image itself (leaving the pointers),
+  // but its planes only if num_channels is set, which it does on success.
+  exr.num_channels = header.num_channels;
   if (LoadEXRImageFromMemory(&exr, &header, data, file.size(), &err) != TINYEXR_SUCCESS)
     refuse(path, "cannot read EXR: " + take_exr_error(err));
   std::unique_ptr<EXRImage, int (*)(EXRImage*)> image_owner(&exr, &FreeEXRImage);
