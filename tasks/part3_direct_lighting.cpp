@@ -24,7 +24,7 @@ Spectrum PathTracer::zero_bounce_radiance(const Ray& r, const Intersection& isec
 }
 
 Spectrum PathTracer::estimate_direct_lighting_hemisphere(const Ray& r, const Intersection& isect, Rng& rng) const {
-  // TODO(P3T3): average over (number of lights x ns_area_light) directions
+  // TODO(P3T3): average over max(1, number of lights x ns_area_light) directions
   // sampled uniformly on the hemisphere of isect.n: f * L_in * cos / pdf, where
   // L_in is what a ray from the hit point (offset by kRayEpsilon) sees emitted,
   // or scene->background() if it escapes.

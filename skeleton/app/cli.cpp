@@ -17,6 +17,8 @@
 #include "app/command_line.h"
 #include "render/limits.h"
 #include "render/renderer.h"
+#include "scene/course_camera.h"
+#include "scene/scene_info.h"
 #include "scene/scene_loader.h"
 
 namespace pt {
@@ -93,9 +95,9 @@ int run_cli(int argc, char** argv) {
   int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, kMaxThreads);
   int accumulate = 1;
   double exposure = 0.0;
-  bool quiet = false;
+  bool quiet = false, course_view = false, scene_info = false;
 
-  app.add_option("scene", scene_path, "Scene file (.json)")->required();
+  app.add_option("scene", scene_path, "Scene file (.json or .dae)")->required();
   app.add_option("-s,--samples", s.ns_aa, "Samples per pixel (the cap with -a)")->check(within(1, kMaxSamples));
   app.add_option("-l,--light-samples", s.ns_area_light, "Samples per area light")
       ->check(within(1, kMaxLightSamples));
@@ -113,6 +115,9 @@ int run_cli(int argc, char** argv) {
   app.add_option("--seed", s.seed, "Render seed")->check(unsigned_integer());
   app.add_option("--exposure", exposure, "PNG exposure in stops")->check(within(-64, 64));
   app.add_flag("-q,--quiet", quiet, "No progress line");
+  app.add_flag("--course-camera", course_view,
+               "Frame the scene as the course's viewer does (its bounding box, the camera's view direction)");
+  app.add_flag("--scene-info", scene_info, "Print a summary of the scene as one JSON object and exit");
   if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   if (!resolution.empty()) s.width = resolution[0], s.height = resolution[1];
@@ -131,18 +136,24 @@ int run_cli(int argc, char** argv) {
   std::vector<std::string> outputs = {output, exr_path};
   if (s.adaptive) outputs.push_back(rate_path);
   for (const std::string& path : outputs)
-    if (std::string why = check_writable(path); !why.empty()) return bad_input(why);
+    if (std::string why = check_writable(path); !why.empty() && !scene_info) return bad_input(why);
 
   LoadedScene loaded;
   try {
-    loaded = load_scene(scene_path);
+    loaded = load_scene(scene_path, scene_info ? BuildBvh::No : BuildBvh::Yes);
     if (!camera_path.empty()) loaded.scene.camera = load_camera(camera_path);
+    Camera& camera = loaded.scene.camera;
+    if (course_view) camera = course_camera(camera, loaded.scene.bounds(), s.width, s.height);
   } catch (const std::exception& e) {
     return bad_input(e.what());
   }
-  for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
   Scene& scene = loaded.scene;
   scene.camera.set_aspect(double(s.width) / s.height);
+  if (scene_info) {
+    std::cout << scene_info_json(loaded) << std::endl;  // the warnings are in it
+    return 0;
+  }
+  for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
 
   std::fprintf(stderr, "%s: %zu primitives (%zu triangles), %zu lights; %dx%d, %d spp%s, %d light samples, depth %d, %d threads\n",
                scene_path.c_str(), scene.primitives.size(), scene.triangle_count(), scene.lights.size(), s.width,

@@ -157,22 +157,6 @@ bool in_range(double v, Range r) {
 
 }  // namespace
 
-std::string format_number(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-TextPosition text_position(const std::string& text, size_t offset) {
-  offset = std::min(offset, text.size());
-  TextPosition p{1, 1};
-  for (size_t i = 0; i < offset; ++i) {
-    if (text[i] == '\n') ++p.line, p.column = 1;
-    else ++p.column;
-  }
-  return p;
-}
-
 json parse_json_file(const std::string& path, const char* what) {
   const std::string text = read_input_file(path, kMaxSceneFileBytes, what);
   // nlohmann stops at a NUL byte as if the text ended there, so that whatever

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/vec.h"
+#include "scene/scene_text.h"
 
 namespace pt {
 
@@ -22,16 +23,9 @@ using json = nlohmann::json;
 // the last).
 json parse_json_file(const std::string& path, const char* what);
 
-// Line and column (1-based, in bytes) of a byte offset into `text`.
-struct TextPosition {
-  size_t line, column;
-};
-TextPosition text_position(const std::string& text, size_t offset);
-
 // Which numbers a field accepts. Every number must also be finite and at
-// most kMaxMagnitude in size, so that no product of a few of them overflows.
+// most kMaxMagnitude in size (scene_text.h).
 enum class Range { Any, NonNegative, Positive, Unit /* [0, 1] */ };
-constexpr double kMaxMagnitude = 1e30;
 
 // Typed, checked access to the values of one parsed file. Every method takes
 // the JSON pointer of what it reads, for the error message.
@@ -67,8 +61,5 @@ class JsonReader {
 // pointer + "/" + key, escaped as RFC 6901 asks ("~" -> "~0", "/" -> "~1").
 std::string child(const std::string& pointer, const std::string& key);
 std::string child(const std::string& pointer, size_t index);
-
-// A number as a person would write it in the file ("200", "0.25", "1e+40").
-std::string format_number(double v);
 
 }  // namespace pt

@@ -63,6 +63,10 @@ size_t Scene::triangle_count() const {
   return n;
 }
 
-BBox Scene::bounds() const { return bvh ? bvh->get_bbox() : BBox(); }
+BBox Scene::bounds() const {
+  BBox b;
+  for (const auto& p : primitives) b.expand(p->get_bbox());
+  return b;
+}
 
 }  // namespace pt

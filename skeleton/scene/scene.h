@@ -56,6 +56,8 @@ class Scene {
   Spectrum background(const Vec3& /*dir*/) const { return sky_radiance_; }
 
   size_t triangle_count() const;
+  // The union of the primitives' boxes (not the BVH's: no BVH is needed, and
+  // a student's BVH cannot move it).
   BBox bounds() const;
 
   Camera camera;

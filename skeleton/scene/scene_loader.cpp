@@ -9,6 +9,7 @@
 #include <map>
 
 #include "render/settings.h"
+#include "scene/collada_loader.h"
 #include "scene/input_file.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
@@ -72,7 +73,6 @@ class JsonSceneLoader {
     r_.expect_array(shapes, "/shapes");
     if (shapes.empty()) r_.fail("/shapes", "a scene needs at least one shape");
     for (size_t i = 0; i < shapes.size(); ++i) read_shape(shapes[i], child("/shapes", i));
-    scene_.build();
   }
 
  private:
@@ -229,12 +229,14 @@ std::string lowercase_extension(const std::string& path) {
 
 }  // namespace
 
-LoadedScene load_scene(const std::string& path) {
+LoadedScene load_scene(const std::string& path, BuildBvh bvh) {
   LoadedScene out;
   std::string ext = lowercase_extension(path);
   check_input_path(path, "a scene file");
   if (ext == ".json") JsonSceneLoader(path, &out).load();
-  else throw SceneError(path + ": unknown scene format \"" + ext + "\" (expected .json)");
+  else if (ext == ".dae") load_collada(path, &out);
+  else throw SceneError(path + ": unknown scene format \"" + ext + "\" (expected .json or .dae)");
+  if (bvh == BuildBvh::Yes) out.scene.build();
   return out;
 }
 

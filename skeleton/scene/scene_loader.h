@@ -22,9 +22,13 @@ struct LoadedScene {
   std::vector<std::string> warnings;
 };
 
-// Loads a scene file (format by extension: .json) and builds its BVH.
-// Throws SceneError.
-LoadedScene load_scene(const std::string& path);
+// Whether load_scene builds the BVH (a summary of the scene needs none, and so
+// works before Part 2 is done).
+enum class BuildBvh { No, Yes };
+
+// Loads a scene file, by extension: .json (the framework's format) or .dae
+// (COLLADA, scene/collada_loader.h). Throws SceneError.
+LoadedScene load_scene(const std::string& path, BuildBvh bvh = BuildBvh::Yes);
 
 // Loads a camera file (a JSON object with the scene format's "camera" fields).
 Camera load_camera(const std::string& path);

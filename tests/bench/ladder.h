@@ -13,15 +13,16 @@
 //   2. float pairs   a 64-byte node holds both children's boxes in float,
 //                    rounded outwards: one cache line answers "which children
 //                    does the ray enter?"
-//   3. + triangles   the leaves' triangles copied in leaf order (first vertex
-//                    and two edges, double): no virtual call, no index into
-//                    the mesh, the same arithmetic as Part 1's reference
-//                    Moller-Trumbore
+//   3. + triangles   the leaves' triangles copied in leaf order (three
+//                    vertices, double): no virtual call, no index into the
+//                    mesh, the same arithmetic as Part 1's reference
+//                    (watertight) triangle test
 //   4. 4-wide        the binary tree collapsed into nodes of four children,
 //                    their boxes tested at once with SSE (float, widened so as
 //                    never to miss what the double test hits)
 //   5. + float triangles   each leaf's triangles in packets of four, tested at
-//                    once with SSE in float (Embree's "triangle4" leaves)
+//                    once with SSE in float (Embree's "triangle4" leaves),
+//                    by Moller-Trumbore: not watertight
 //
 // Steps 1 to 4 find exactly the reference's hits (the same t to the bit);
 // step 5 computes in float and agrees to float precision, as Embree does.

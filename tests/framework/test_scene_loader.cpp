@@ -501,7 +501,7 @@ TEST_F(SceneFiles, MissingOrUnusableFiles) {
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()), dir_.string() + "/dir.json: is a directory, not a scene file");
   }
-  EXPECT_TRUE(contains(error_of(kMinimal, "scene.dae"), "unknown scene format \".dae\""));
+  EXPECT_TRUE(contains(error_of(kMinimal, "scene.obj"), "unknown scene format \".obj\" (expected .json or .dae)"));
 }
 
 TEST_F(SceneFiles, StructureErrors) {

@@ -195,6 +195,48 @@ TEST(MeanTests, ExactEstimatorsPassOnlyAtTheirValue) {
   EXPECT_FALSE(stats::mean_matches(none, 0.0, 1e-5)) << "no samples is no evidence";
 }
 
+TEST(MeanTests, PooledRelativeBiasFindsACommonFactor) {
+  // Eight configurations of n = 2e4 normal samples with means 1..8 and sd
+  // equal to the mean: relative se 0.71% each, 0.25% pooled (sqrt 8 times
+  // smaller). (1) True means: accepted unless |z| > 4.4 (alpha = 1e-5).
+  // (2) Every mean 3% high: 4.2 standard errors of each configuration (a
+  // separate test at alpha 1e-5 / 8 misses it about half the time), 12 of
+  // the pool: rejected but for a chance of about 1e-13. (3) An exact
+  // configuration (no spread) and one whose mean is 0 are left out of the
+  // pool; a NaN sample fails it.
+  const int n = 20000;
+  Normal normal(test::seed(15));
+  std::vector<RunningStats> fair(8), biased(8);
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < n; ++i) {
+      const double mu = k + 1.0, x = mu * (1.0 + normal());
+      fair[size_t(k)].add(x);
+      biased[size_t(k)].add(1.03 * x);
+    }
+  std::vector<stats::MeanAgainst> f, b;
+  for (int k = 0; k < 8; ++k) {
+    f.push_back({&fair[size_t(k)], k + 1.0});
+    b.push_back({&biased[size_t(k)], k + 1.0});
+  }
+  const stats::MeanTestResult pooled = stats::pooled_relative_bias(f, 1e-5, "fair");
+  EXPECT_TRUE(stats::check(pooled));
+  EXPECT_NEAR(pooled.standard_error, 0.0025, 0.0002) << "1 / sqrt(8 (1 / 0.00707)^2)";
+  EXPECT_FALSE(stats::check(stats::pooled_relative_bias(b, 1e-5, "3% high")));
+
+  RunningStats exact, zero, nan_sample;
+  for (int i = 0; i < 10; ++i) {
+    exact.add(3.0);
+    zero.add(normal());
+  }
+  nan_sample.add(std::nan(""));
+  std::vector<stats::MeanAgainst> with_exact = f;
+  with_exact.push_back({&exact, 5.0});  // its own exact check would fail; the pool leaves it out
+  with_exact.push_back({&zero, 0.0});
+  EXPECT_TRUE(stats::check(stats::pooled_relative_bias(with_exact, 1e-5)));
+  with_exact.push_back({&nan_sample, 1.0});
+  EXPECT_FALSE(stats::check(stats::pooled_relative_bias(with_exact, 1e-5)));
+}
+
 // ---- Chi-square ----------------------------------------------------------------
 
 TEST(ChiSquare, PoolsSmallCellsAndCountsDegreesOfFreedom) {

@@ -8,8 +8,8 @@ set(p1 reference/part1_raygen_intersect.cpp)
 
 # Forgets to normalise the direction.
 # Caught by CameraRay.BottomLeftIsImageOrigin, CameraRay.CornersSpanTheSensor,
-#   CameraRay.SensorIsAPlane (hidden), CameraRay.PosedCameraMatchesLookAt (hidden),
-#   CameraRay.DirectionIsUnitLength.
+#   CameraRay.DirectionIsUnitLength, CameraRay.SensorIsAPlane (hidden),
+#   CameraRay.PosedCameraMatchesLookAt (hidden).
 pt_mutant(1 cam_not_normalised ${p1} [[Ray r(pos, glm::normalize(c2w * sensor));]] [[Ray r(pos, c2w * sensor);]])
 
 # Uses the full field of view where the half angle belongs: tan(fov) for tan(fov/2).
@@ -64,11 +64,12 @@ pt_mutant(1 cam_no_clip_range ${p1} [[  r.min_t = near_clip;
 # ---- P1T2 PathTracer::raytrace_pixel ----
 
 # Every sample through the pixel's bottom-left corner.
-# Caught by PixelSampling.SingleSampleGoesThroughPixelCentre, PixelSampling.SamplesAreJitteredAcrossThePixel.
+# Caught by PixelSampling.SingleSampleGoesThroughPixelCentre, PixelSampling.SamplesAreJitteredAcrossThePixel,
+#   PixelSampling.JitterComesFromTheRngPassedIn.
 pt_mutant(1 px_corner ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[Vec2 u(0.0);]])
 
 # No jitter: every sample through the pixel centre.
-# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel.
+# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel, PixelSampling.JitterComesFromTheRngPassedIn.
 pt_mutant(1 px_no_jitter ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[Vec2 u(0.5);]])
 
 # Jitters the single sample too (ns_aa = 1 must go through the centre).
@@ -108,35 +109,54 @@ pt_mutant(1 px_divide_by_n_plus_1 ${p1} [[return {sum / double(n), n};]] [[retur
 # Caught by PixelSampling.RecordsSampleCount.
 pt_mutant(1 px_count_not_recorded ${p1} [[return {sum / double(n), n};]] [[return {sum / double(n), 1};]])
 
+# Jitters with a generator of its own, seeded from the pixel: every sample
+# lands in its pixel and is uniform, but the image no longer depends on the
+# render's seed and the rng passed in is never used.
+# Caught by PixelSampling.JitterComesFromTheRngPassedIn.
+pt_mutant(1 px_own_rng ${p1} [[  for (int i = 0; i < n; ++i) {
+    Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
+  for (int i = 0; i < n; ++i) {
+    Vec2 u = n == 1 ? Vec2(0.5) : own.uniform2();]])
+
 # ---- P1T3 Triangle::has_intersection, Triangle::intersect ----
+# The reference is the watertight test (u, v, w: the edge functions, the
+# unnormalised weights of p1, p2, p3); each mutant is the bug a student makes
+# in Moller-Trumbore, written in its terms.
 
 # Exchanges the weights of n2 and n3 in the interpolated normal.
 # Caught by TriangleIntersect.InterpolatedNormal.
-pt_mutant(1 tri_swapped_normal_weights ${p1} [[b0 * n1() + hit.b1 * n2() + hit.b2 * n3()]]
-  [[b0 * n1() + hit.b2 * n2() + hit.b1 * n3()]])
+pt_mutant(1 tri_swapped_normal_weights ${p1} [[hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3()]]
+  [[hit.b0 * n1() + hit.b2 * n2() + hit.b1 * n3()]])
 
 # Forgets to normalise the interpolated normal.
 # Caught by TriangleIntersect.InterpolatedNormal.
-pt_mutant(1 tri_normal_not_normalised ${p1} [[isect->n = glm::normalize(b0 * n1() + hit.b1 * n2() + hit.b2 * n3());]]
-  [[isect->n = b0 * n1() + hit.b1 * n2() + hit.b2 * n3();]])
+pt_mutant(1 tri_normal_not_normalised ${p1} [[isect->n = glm::normalize(hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3());]]
+  [[isect->n = hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3();]])
 
 # Stores the barycentrics in the wrong order.
-# Caught by TriangleIntersect.Barycentrics, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
-pt_mutant(1 tri_barycentrics_rotated ${p1} [[isect->barycentric = Vec3(b0, hit.b1, hit.b2);]]
-  [[isect->barycentric = Vec3(hit.b1, hit.b2, b0);]])
+# Caught by TriangleIntersect.Barycentrics, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+pt_mutant(1 tri_barycentrics_rotated ${p1} [[isect->barycentric = Vec3(hit.b0, hit.b1, hit.b2);]]
+  [[isect->barycentric = Vec3(hit.b1, hit.b2, hit.b0);]])
 
-# Strict inside test b1 > 0, b2 > 0: a ray through a shared edge slips between the triangles.
+# Strict inside test on every edge (Moller-Trumbore's b1 > 0, b2 > 0,
+# b1 + b2 < 1): a ray through a shared edge slips between the triangles.
 # Caught by TriangleIntersect.SharedEdgeCannotSlipThrough (hidden).
-pt_mutant(1 tri_strict_edges ${p1} [[b1 >= 0.0 && b2 >= 0.0]] [[b1 > 0.0 && b2 > 0.0]])
+pt_mutant(1 tri_strict_edges ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
+  [[if ((u <= 0.0 || v <= 0.0 || w <= 0.0) && (u >= 0.0 || v >= 0.0 || w >= 0.0)) return false;]])
 
-# Strict b1 + b2 < 1: the third edge leaks.
+# Strict on the edge p2-p3 only (Moller-Trumbore's b1 + b2 < 1): that edge leaks.
 # Caught by TriangleIntersect.SharedEdgeCannotSlipThrough (hidden).
-pt_mutant(1 tri_strict_sum ${p1} [[b1 + b2 <= 1.0]] [[b1 + b2 < 1.0]])
+pt_mutant(1 tri_strict_one_edge ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
+  [[if ((u <= 0.0 || v < 0.0 || w < 0.0) && (u >= 0.0 || v > 0.0 || w > 0.0)) return false;]])
 
-# Forgets the b1 + b2 <= 1 test: hits the whole parallelogram.
+# Forgets the edge p2-p3 (Moller-Trumbore without b1 + b2 <= 1): hits
+# beyond it.
 # Caught by TriangleIntersect.MissesBesideEachEdge,
-#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
-pt_mutant(1 tri_no_sum_test ${p1} [[b1 + b2 <= 1.0 && ]] [[]])
+#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+pt_mutant(1 tri_no_sum_test ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
+  [[if ((v < 0.0 || w < 0.0) && (v > 0.0 || w > 0.0)) return false;]])
 
 # Ignores min_t: hits behind the origin (and before the near clip).
 # Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
@@ -152,42 +172,38 @@ pt_mutant(1 tri_ignores_max_t ${p1} [[ && t <= r.max_t]] [[]])
 pt_mutant(1 tri_no_max_t_update ${p1} [[  r.max_t = hit.t;
 ]] [[]])
 
-# Back-face culling (det <= 0 rejected): triangles are two-sided here.
+# Back-face culling (one winding rejected): triangles are two-sided here.
 # Caught by TriangleIntersect.HitDistanceAndPoint, TriangleIntersect.Barycentrics,
-#   TriangleIntersect.InterpolatedNormal, TriangleIntersect.SharedEdgeCannotSlipThrough (hidden),
-#   TriangleIntersect.HitsBothFaces, TriangleIntersect.ShrinksMaxT,
-#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
-pt_mutant(1 tri_backface_culling ${p1} [[if (det == 0.0 || !std::isfinite(det)) return false;]]
-  [[if (det <= 0.0 || !std::isfinite(det)) return false;]])
+#   TriangleIntersect.InterpolatedNormal, TriangleIntersect.HitsBothFaces, TriangleIntersect.ShrinksMaxT,
+#   TriangleIntersect.SharedEdgeCannotSlipThrough (hidden),
+#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+pt_mutant(1 tri_backface_culling ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
+  [[if (u < 0.0 || v < 0.0 || w < 0.0) return false;]])
 
 # No determinant check and rejection tests that NaN slips through: a
 # zero-area triangle or a ray in the triangle's plane "hits" with t = NaN.
 # Caught by TriangleIntersect.DegenerateNeverHits, TriangleIntersect.RayInItsPlaneMisses (hidden).
 pt_mutant(1 tri_nan_unsafe ${p1}
-  [[  if (det == 0.0 || !std::isfinite(det)) return false;  // ray parallel to the plane, or a degenerate triangle
-  double inv = 1.0 / det;
-  double t = glm::dot(s2, e2) * inv;
-  double b1 = glm::dot(s1, s) * inv;
-  double b2 = glm::dot(s2, r.d) * inv;
-  // Written so that NaN fails every comparison and so never counts as a hit.
-  if (!(b1 >= 0.0 && b2 >= 0.0 && b1 + b2 <= 1.0 && t >= r.min_t && t <= r.max_t)) return false;]]
-  [[  double inv = 1.0 / det;
-  double t = glm::dot(s2, e2) * inv;
-  double b1 = glm::dot(s1, s) * inv;
-  double b2 = glm::dot(s2, r.d) * inv;
-  if (b1 < 0.0 || b2 < 0.0 || b1 + b2 > 1.0 || t < r.min_t || t > r.max_t) return false;]])
+  [[  if (det == 0.0) return false;  // ray in the triangle's plane, or a degenerate triangle
+  const double t = (u * (sz * a[kz]) + v * (sz * b[kz]) + w * (sz * c[kz])) / det;
+  // Written so that NaN (a zero direction, infinite vertices) is never a hit.
+  if (!(t >= r.min_t && t <= r.max_t)) return false;]]
+  [[  const double t = (u * (sz * a[kz]) + v * (sz * b[kz]) + w * (sz * c[kz])) / det;
+  if (t < r.min_t || t > r.max_t) return false;]])
 
 # has_intersection tests the whole line, forgetting the ray's t range.
 # Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.HasIntersectionAgreesWithIntersect,
 #   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
 pt_mutant(1 tri_any_hit_ignores_range ${p1} [[bool Triangle::has_intersection(const Ray& r) const {
   TriangleHit hit;
-  return moller_trumbore(r, p1(), p2(), p3(), &hit);]]
+  return watertight(r, p1(), p2(), p3(), &hit);]]
   [[bool Triangle::has_intersection(const Ray& r) const {
   TriangleHit hit;
   Ray line(r.o, r.d);
   line.min_t = -kInf;
-  return moller_trumbore(line, p1(), p2(), p3(), &hit);]])
+  return watertight(line, p1(), p2(), p3(), &hit);]])
 
 # Does not record the primitive and BSDF hit.
 # Caught by TriangleIntersect.RecordsPrimitiveAndBsdf, TriangleIntersect.KeepsNearerHit.
@@ -201,6 +217,19 @@ pt_mutant(1 tri_no_primitive_bsdf ${p1} [[  isect->primitive = this;
 
 // P1T4]])
 
+# An absolute epsilon on the determinant (the 1e-6 printed in the original
+# Moller-Trumbore paper): right for triangles of about unit size, blind to
+# small ones and thin slivers, whose determinant (twice their projected area)
+# is below it.
+# Caught by TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+pt_mutant(1 tri_absolute_det_epsilon ${p1} [[if (det == 0.0) return false;]] [[if (std::abs(det) < 1e-6) return false;]])
+
+# Strict range test, min_t < t < max_t: a hit exactly at max_t (a ray
+# re-tested after intersect set max_t = t) or at min_t is lost.
+# Caught by TriangleIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
+pt_mutant(1 tri_strict_t_range ${p1} [[if (!(t >= r.min_t && t <= r.max_t)) return false;]]
+  [[if (!(t > r.min_t && t < r.max_t)) return false;]])
+
 # ---- P1T4 Sphere::test, Sphere::has_intersection, Sphere::intersect ----
 
 # Roots not put in order (t1 is the larger root whenever b < 0).
@@ -213,12 +242,14 @@ pt_mutant(1 sph_roots_unordered ${p1} [[  if (t1 > t2) std::swap(t1, t2);
 # Takes the far root when the near one is in range.
 # Caught by SphereIntersect.NearRootFromOutside, SphereIntersect.RespectsTRange,
 #   SphereIntersect.KeepsNearerHit, SphereIntersect.OutwardUnitNormal,
-#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
 pt_mutant(1 sph_far_root ${p1} [[*t = t1;]] [[*t = t2;]])
 
 # Tries only the near root: from inside the sphere (t1 < 0) it misses.
 # Caught by SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.RespectsTRange,
-#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
 pt_mutant(1 sph_near_root_only ${p1} [[  if (t2 >= ray.min_t && t2 <= ray.max_t) {
     *t = t2;
     return true;
@@ -228,39 +259,44 @@ pt_mutant(1 sph_near_root_only ${p1} [[  if (t2 >= ray.min_t && t2 <= ray.max_t)
 # Ignores min_t for the near root: hits behind the origin.
 # Caught by SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.SphereBehindMisses,
 #   SphereIntersect.RespectsTRange, SphereIntersect.TinyAndHugeSpheres (hidden),
-#   SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
 pt_mutant(1 sph_ignores_min_t ${p1} [[if (t1 >= ray.min_t && t1 <= ray.max_t)]] [[if (t1 <= ray.max_t)]])
 
 # Inward normal.
 # Caught by SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
-#   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
 pt_mutant(1 sph_inward_normal ${p1} [[glm::normalize(ray.at(t) - o)]] [[glm::normalize(o - ray.at(t))]])
 
 # Normal not divided by the radius.
 # Caught by SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
-#   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
 pt_mutant(1 sph_normal_not_unit ${p1} [[isect->n = glm::normalize(ray.at(t) - o);]] [[isect->n = ray.at(t) - o;]])
 
 # Treats a zero discriminant as a miss: tangent rays slip past.
-# Caught by SphereIntersect.TangentRayTouches.
+# Caught by SphereIntersect.TangentRayTouches, SphereTest.TangentRayFromAPointOnTheSphere (hidden).
 pt_mutant(1 sph_tangent_misses ${p1} [[if (disc < 0.0) return false;]] [[if (disc <= 0.0) return false;]])
 
 # Forgets the square root of the discriminant.
 # Caught by SphereTest.RootsInOrder, SphereTest.NonUnitDirection, SphereIntersect.NearRootFromOutside,
 #   SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.RespectsTRange, SphereIntersect.KeepsNearerHit,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.TinyAndHugeSpheres (hidden),
-#   SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
 pt_mutant(1 sph_no_sqrt ${p1} [[std::copysign(std::sqrt(disc), b)]] [[std::copysign(disc, b)]])
 
 # Assumes a unit direction (a = 1).
-# Caught by SphereTest.NonUnitDirection, SphereIntersect.RandomRaysMatchClosedForm (hidden).
+# Caught by SphereTest.NonUnitDirection, SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
 pt_mutant(1 sph_assumes_unit_direction ${p1} [[double a = glm::dot(ray.d, ray.d);]] [[double a = 1.0;]])
 
 # Uses r instead of r^2 in c = |o - centre|^2 - r^2.
 # Caught by SphereTest.RootsInOrder, SphereTest.NonUnitDirection, SphereIntersect.NearRootFromOutside,
 #   SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.TinyAndHugeSpheres (hidden),
-#   SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
 pt_mutant(1 sph_radius_not_squared ${p1} [[double c = glm::dot(oc, oc) - r2;]] [[double c = glm::dot(oc, oc) - r;]])
 
 # Computes the discriminant in single precision: roots good to about 1e-7
@@ -274,4 +310,27 @@ pt_mutant(1 sph_float_discriminant ${p1} [[double disc = b * b - 4.0 * a * c;]]
 # Does not shrink ray.max_t on a hit.
 # Caught by SphereIntersect.KeepsNearerHit.
 pt_mutant(1 sph_no_max_t_update ${p1} [[  ray.max_t = t;
+]] [[]])
+
+# Strict range test, min_t < t < max_t: a root exactly on an end of the
+# interval (a ray re-tested after intersect set max_t = t) is lost.
+# Caught by SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+pt_mutant(1 sph_strict_range ${p1} [[  if (t1 >= ray.min_t && t1 <= ray.max_t) {
+    *t = t1;
+    return true;
+  }
+  if (t2 >= ray.min_t && t2 <= ray.max_t) {]] [[  if (t1 > ray.min_t && t1 < ray.max_t) {
+    *t = t1;
+    return true;
+  }
+  if (t2 > ray.min_t && t2 < ray.max_t) {]])
+
+# No q = 0 case in the stable roots: with the origin on the sphere and the ray
+# tangent to it (b = c = 0), t2 = c / q = 0 / 0 is NaN.
+# Caught by SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+pt_mutant(1 sph_no_q_zero_case ${p1} [[  if (q == 0.0) {
+    t1 = t2 = 0.0;  // origin on the sphere, ray tangent to it
+    return true;
+  }
 ]] [[]])

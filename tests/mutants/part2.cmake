@@ -73,6 +73,13 @@ pt_mutant(2 no_fallback_leaf ${p2} [[      mid = begin + (end - begin) / 2;]]
 # BVHDegenerate.AllCentroidsEqual (depth bound).
 pt_mutant(2 fallback_peels_one ${p2} [[      mid = begin + (end - begin) / 2;]] [[      mid = begin + 1;]])
 
+# max_leaf_size 0 taken literally: a range of one primitive is never a leaf;
+# it cannot be split, the fallback halves it into an empty and a full half,
+# and the build recurses on the same primitive until the stack overflows.
+# Caught by BVHDegenerate.LeafSizeZeroMeansOne (hidden; the test crashes).
+pt_mutant(2 leaf_size_zero_recurses ${p2} [[max_leaf_size_(std::max<size_t>(1, max_leaf_size))]]
+          [[max_leaf_size_(max_leaf_size)]])
+
 # The classic single-axis split: the middle of the centroid box along its
 # longest axis, no cost model. Caught by BVHQuality.SahCostOnElongatedScene.
 pt_mutant(2 single_axis_midpoint ${p2} [[    Split split = best_split(begin, end, centroids);]]
@@ -189,3 +196,15 @@ pt_mutant(2 anyhit_no_early_exit ${p2} [[      for (size_t i = node->start; i < 
       for (size_t i = node->start; i < node->end; ++i)
         found |= primitives_[i]->has_intersection(r);  // the whole leaf, even after a hit
       if (found) return true;]])
+
+# any-hit descends into both children without testing their boxes: the right
+# answer, from brute-force work (every primitive of a ray that hits nothing).
+# Caught by BVHTraversal.AnyHitTestsOnlyLeavesTheRayEnters (hidden).
+pt_mutant(2 anyhit_no_box_tests ${p2} [[      ChildrenEntered e = enter_children(*node, r, inv_d);
+      work.node_visits += 2;
+      if (e.count == 2) {
+        if (size < kStackSize) {
+          stack[size++] = e.far;]] [[      ChildrenEntered e{2, node->l.get(), node->r.get(), 0.0};  // no box tests: both children, always
+      if (e.count == 2) {
+        if (size < kStackSize) {
+          stack[size++] = e.far;]])

@@ -5,6 +5,18 @@ set(p5 reference/part5_adaptive_sampling.cpp)
 # Biased variance: divides by n instead of n - 1.
 pt_mutant(5 variance_over_n ${p5} [[/ (n - 1));]] [[/ n);]])
 
+# The half-width with sqrt(n - 1): sigma^2 is already divided by n - 1.
+# Caught by SampleAdaptively.HalfWidthIsSigmaOverSqrtN (hidden),
+# SampleAdaptively.BatchOfOneSkipsTheFirstCheck (hidden).
+pt_mutant(5 half_width_sqrt_n_minus_1 ${p5} [[1.96 * std::sqrt(var / n)]] [[1.96 * std::sqrt(var / (n - 1))]])
+
+# Checks at n = 1 when the batch size is 1: (s2 - s1^2) / 0 = NaN, clamped
+# to 0, and every pixel stops after one sample.
+# Caught by SampleAdaptively.BatchOfOneSkipsTheFirstCheck (hidden),
+# SampleAdaptively.HalfWidthIsSigmaOverSqrtN (hidden).
+pt_mutant(5 batch_of_one_checks_first_sample ${p5} [[n % samples_per_batch == 0 && n > 1]]
+          [[n % samples_per_batch == 0]])
+
 # Forgets the square root: compares 1.96 sigma^2 / n with the tolerance.
 pt_mutant(5 missing_sqrt ${p5} [[1.96 * std::sqrt(var / n)]] [[1.96 * (var / n)]])
 
@@ -81,3 +93,10 @@ pt_mutant(5 jitter_single_sample ${p5} [[Vec2 u = settings.ns_aa == 1 ? Vec2(0.5
 # Divides the pixel offset by the wrong dimension (width and height swapped).
 pt_mutant(5 swapped_width_height ${p5} [[(x + u.x) / settings.width, (y + u.y) / settings.height]]
           [[(x + u.x) / settings.height, (y + u.y) / settings.width]])
+
+# Jitters with a generator of its own, seeded from the pixel.
+# Caught by PixelAdaptive.UsesOnlyTheRngItIsGiven (hidden).
+pt_mutant(5 own_rng ${p5} [[  auto next_sample = [&] {
+    Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
+  auto next_sample = [&] {
+    Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : own.uniform2();]])

@@ -152,6 +152,8 @@ GRADED_TEST_F(PixelSampling, SamplesAreJitteredAcrossThePixel, "P1T2", 1, Visibl
   //    (sd 1/sqrt(12 * 256) = 0.018), p < 1e-7;
   //  - u and v are uncorrelated: |corr| < 0.4 is 6.4 standard errors
   //    (sd 1/16), p < 1e-9.
+  // Power (99%): a mean offset of 0.14 or more from 1/2, a correlation of
+  // 0.55 or more.
   const int ns = 256, x = 2, y = 3;
   ScriptedTracer t = tracer(ns);
   Rng rng(seed(6));
@@ -189,6 +191,20 @@ GRADED_TEST_F(PixelSampling, SamplesAreJitteredAcrossThePixel, "P1T2", 1, Visibl
       << "Sample offsets must be uniform in the pixel, with mean 1/2.\n"
       << got.str();
   EXPECT_LT(std::abs(corr), 0.4) << "The x and y offsets must be independent random numbers.\n" << got.str();
+}
+
+GRADED_TEST_F(PixelSampling, JitterComesFromTheRngPassedIn, "P1T2", 0.5, Visible) {
+  // Section 2 of the handout: use the rng you are given. 16 samples of pixel
+  // (3, 2); exact comparisons of the rays (support/scripted_tracer.h).
+  const int ns = 16;
+  EXPECT_TRUE(test::jitter_comes_from(
+      [&](Rng& rng) {
+        ScriptedTracer t = tracer(ns);
+        t.raytrace_pixel(3, 2, rng);
+        return t.rays;
+      },
+      seed(7)))
+      << where(3, 2, ns);
 }
 
 }  // namespace

@@ -10,6 +10,12 @@
 // estimators' output distributions, which do not depend on the order in
 // which a solution draws its random numbers; nothing is compared with the
 // reference implementation's own output.
+//
+// Power: each statistical test states the smallest relative bias that fails
+// it with probability 99%, (z_{1-alpha/2} + z_0.99) x the relative standard
+// error of its most precise check (measured with PT_STATS_VERBOSE=1), and,
+// for a variance test, how far below its stated factor the true ratio must
+// be to fail it with probability 99%, factor x exp(-(z_{1-alpha} + z_0.99) se).
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -31,6 +37,8 @@ using test::polygon_irradiance;
 
 constexpr double kAlphaTest = 1e-5;
 constexpr double kAlbedo = 0.8;  // grey receivers: the estimate's illuminance is its value in every channel
+constexpr double kL = 5.0;        // radiance of the area lights of the mean tests
+constexpr int kNs = 4;            // ns_area_light of the mean tests: the 1/N averaging is exercised too
 
 inline double alpha_each(int checks) { return stats::sidak_alpha(kAlphaTest, checks); }
 
@@ -86,6 +94,21 @@ inline stats::RunningStats run(const Lit& lit, Method m, const RenderSettings& s
   stats::RunningStats st;
   for (int i = 0; i < n; ++i) st.add(illuminance(estimate(tracer, lit.aim, m, rng)));
   return st;
+}
+
+// The configuration of the variance tests: the 0.8 x 0.6 light of
+// lambert_cases() at height 1, radiance 5, above a receiver facing it.
+inline Lit moderate_light() {
+  return make_lit({0, 0, 0}, {0, 0, 1}, [](Scene& s) { s.add_area_light(Spectrum(5.0), {0, 0, 1}, {0.8, 0, 0}, {0, -0.6, 0}); });
+}
+
+// Radiance a ray from `from` towards `to` sees emitted by the first surface hit.
+inline Spectrum seen(const Scene& s, const Vec3& from, const Vec3& to) {
+  Ray r(from, glm::normalize(to - from));
+  Intersection isect;
+  if (!s.intersect(r, &isect)) throw std::logic_error("test set-up: the ray misses");
+  PathTracer tracer(s, RenderSettings{});
+  return tracer.zero_bounce_radiance(r, isect);
 }
 
 // Outgoing radiance of the Lambertian receiver under irradiance E.

@@ -12,6 +12,10 @@
 // every mutant of the gallery moves some configuration by 17% or more (most
 // by factors: see handouts/part3.md). Run with PT_STATS_VERBOSE=1 to see
 // every check's n, mean, expected, standard error, t and p.
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include "common.h"
 #include "support/graded.h"
 
@@ -20,94 +24,70 @@ namespace {
 
 using namespace test::part3;
 
-constexpr double kL = 5.0;  // radiance of the area lights
-constexpr int kNs = 4;      // ns_area_light of the mean tests: the 1/N averaging is exercised too
-
 // Configurations of lambert_cases(): the light 0.8 x 0.6 at height 1 (or the
 // tilted one), points below, beside, partly or wholly below the horizon,
-// behind the light.
+// behind the light. One t test per configuration and one pooled test of a
+// relative bias common to all of them (statistics.h), alpha split 9 ways.
 void check_lambert_cases(Method m, int n, uint64_t seed) {
   const auto cases = lambert_cases();
-  for (const LambertCase& c : cases) {
+  const double alpha = alpha_each(int(cases.size()) + 1);
+  std::vector<stats::RunningStats> samples(cases.size());
+  std::vector<stats::MeanAgainst> pool;
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const LambertCase& c = cases[k];
     Lit lit = make_lit(c.p, c.n, [&](Scene& s) { s.add_area_light(Spectrum(kL), c.c, c.ex, c.ey); });
     const double expected = lambert_out(parallelogram_irradiance(c.p, c.n, c.c, c.ex, c.ey, kL));
-    stats::RunningStats st = run(lit, m, settings_with(kNs), n, test::seed(seed++));
-    EXPECT_TRUE(stats::mean_matches(st, expected, alpha_each(int(cases.size())), std::string(name(m)) + ", " + c.name))
+    samples[k] = run(lit, m, settings_with(kNs), n, test::seed(seed++));
+    pool.push_back({&samples[k], expected});
+    EXPECT_TRUE(stats::mean_matches(samples[k], expected, alpha, std::string(name(m)) + ", " + c.name))
         << "albedo " << kAlbedo << ", light radiance " << kL << ", closed form: (albedo/pi) * Lambert's irradiance";
   }
-}
-
-// Shadows: the edge occluders of occluder_cases() cut the light (the closed
-// form clips the light by the plane through p and the occluder's edge) or
-// pass beside every path to it (no shadow allowed); a large occluder hides
-// the light entirely (exactly zero).
-void check_occluders(Method m, int n, uint64_t seed) {
-  const Vec3 c(0, 0, 1), ex(0.8, 0, 0), ey(0, -0.6, 0);
-  const auto cases = occluder_cases();
-  const double alpha = alpha_each(int(cases.size()) + 1);
-  for (const OccluderCase& oc : cases) {
-    Lit lit = make_lit(oc.p, oc.n, [&](Scene& s) {
-      s.add_area_light(Spectrum(kL), c, ex, ey);
-      oc.occluder.add_to(s);
-    });
-    const double expected = lambert_out(polygon_irradiance(oc.p, oc.n, oc.occluder.visible(oc.p, c, ex, ey), kL));
-    stats::RunningStats st = run(lit, m, settings_with(kNs), n, test::seed(seed++));
-    EXPECT_TRUE(stats::mean_matches(st, expected, alpha, std::string(name(m)) + ", " + oc.name));
-  }
-  Lit hidden = make_lit({0, 0, 0}, {0, 0, 1}, [&](Scene& s) {
-    s.add_area_light(Spectrum(kL), c, ex, ey);
-    s.add_quad({0, 0, 0.5}, {2, 0, 0}, {0, 2, 0}, s.add_bsdf<DiffuseBSDF>(Spectrum(0.0)));
-  });
-  stats::RunningStats st = run(hidden, m, settings_with(kNs), n / 4, test::seed(seed));
-  EXPECT_TRUE(stats::mean_matches(st, 0.0, alpha, std::string(name(m)) + ", light hidden by a large occluder"));
+  EXPECT_TRUE(stats::check(stats::pooled_relative_bias(pool, alpha, std::string(name(m)) + ", all receivers")))
+      << "the estimates are off by the same factor in every configuration: look for a constant (1/pi, 2 pi, the "
+         "1/N of the average)";
 }
 
 // ---- P3T3: uniform hemisphere sampling -------------------------------------
 
-GRADED_TEST(HemisphereLighting, MatchesLambertForAreaLights, "P3T3", 2, Visible) {
-  check_lambert_cases(Method::Hemisphere, 100000, 3300);
-}
-
-GRADED_TEST(HemisphereLighting, ShadowsOnlyWhereAnOccluderBlocks, "P3T3", 1, Hidden) {
-  check_occluders(Method::Hemisphere, 100000, 3310);
-}
-
-// A uniform sky of radiance Ls over a receiver with a black wall on one side:
-// E = Ls (pi - PSA(wall)), where PSA, the projected solid angle of the wall
-// clipped to the hemisphere, is polygon_irradiance with radiance 1.
-Lit sky_scene(const Vec3& n, double sky) {
-  return make_lit({0, 0, 0}, n, [&](Scene& s) {
-    s.add_light<SkyLight>(Spectrum(sky));
-    s.add_quad({1.5, 0, 0.5}, {0, 0, 1.4}, {0, 2, 0}, s.add_bsdf<DiffuseBSDF>(Spectrum(0.0)));  // wall at x = 1.5
-  });
-}
-double sky_expected(const Vec3& n, double sky) {
-  const double psa = polygon_irradiance({0, 0, 0}, glm::normalize(n), parallelogram({1.5, 0, 0.5}, {0, 0, 1.4}, {0, 2, 0}), 1.0);
-  return lambert_out(sky * (kPi - psa));
-}
-
-GRADED_TEST(HemisphereLighting, SeesTheSkyWhereRaysEscape, "P3T3", 1, Hidden) {
-  // Rays that leave the scene bring scene->background(): the sky. Two
-  // receiver orientations, 40000 estimates each (the sky estimator's CV is
-  // about 1: se 0.25%).
-  const std::vector<Vec3> normals = {{0, 0, 1}, glm::normalize(Vec3(0.6, -0.2, 0.5))};
-  uint64_t seed = 3320;
-  for (const Vec3& n : normals) {
-    Lit lit = sky_scene(n, 0.7);
-    stats::RunningStats st = run(lit, Method::Hemisphere, settings_with(kNs), 40000, test::seed(seed++));
-    EXPECT_TRUE(stats::mean_matches(st, sky_expected(n, 0.7), alpha_each(2), "hemisphere sampling of a sky, normal " +
-                                                                                    std::to_string(n.x)));
+// Section 5 of the handout: N = max(1, lights x ns_area_light) hemisphere
+// samples, at least one even when the scene's light list is empty. Emitting
+// surfaces need not be lights (a glowing wall, the white furnace of Part 4),
+// and hemisphere sampling sees them all the same. (1) An emitting 0.8 x 0.6
+// quad overhead, no lights: the mean against Lambert's formula (t test,
+// 400,000 estimates, ns_area_light = 4: any N >= 1 is unbiased; relative
+// standard error 0.59% with one sample per estimate, so a bias of 4% fails
+// with probability 99%; N = 0 gives 0 / 0 = NaN, which fails outright).
+// (2) Nothing emits and nothing is a light: exactly 0, never NaN.
+GRADED_TEST(HemisphereLighting, SeesEmittersWhenTheLightListIsEmpty, "P3T3", 1, Visible) {
+  const Vec3 c(0, 0, 1), ex(0.8, 0, 0), ey(0, -0.6, 0);  // facing down, at the receiver
+  Lit lit = make_lit({0, 0, 0}, {0, 0, 1}, [&](Scene& s) { s.add_quad(c, ex, ey, s.add_bsdf<EmissionBSDF>(Spectrum(kL))); });
+  ASSERT_TRUE(lit.scene.lights.empty());
+  const double expected = lambert_out(parallelogram_irradiance({0, 0, 0}, {0, 0, 1}, c, ex, ey, kL));
+  stats::RunningStats st = run(lit, Method::Hemisphere, settings_with(kNs), 400000, test::seed(3305));
+  EXPECT_TRUE(stats::mean_matches(st, expected, kAlphaTest, "hemisphere sampling, an emitting quad, no lights"))
+      << "with no lights in scene->lights, take at least one sample: N = max(1, lights x ns_area_light)";
+  Lit dark = make_lit({0, 0, 0}, {0, 0, 1}, [](Scene&) {});
+  PathTracer tracer(dark.scene, settings_with(kNs));
+  Rng rng(test::seed(3306));
+  for (int i = 0; i < 1000; ++i) {
+    const Spectrum L = tracer.estimate_direct_lighting_hemisphere(dark.aim.ray, dark.aim.isect, rng);
+    ASSERT_TRUE(L == Spectrum(0.0)) << "a scene with no lights and no emitters gave " << L
+                                    << ": take at least one sample (0 / 0 is NaN)";
   }
 }
 
-// ---- P3T4: light sampling ------------------------------------------------------
-
-GRADED_TEST(LightSampling, MatchesLambertForAreaLights, "P3T4", 2, Visible) {
-  check_lambert_cases(Method::Importance, 50000, 3400);
+// 400,000 estimates per configuration (relative standard errors 0.29% to
+// 1.1%, pooled 0.17%). Power (99%): a bias common to every receiver of 1.2%
+// (the pooled check), or of 2.1% in the best-resolved receiver alone.
+GRADED_TEST(HemisphereLighting, MatchesLambertForAreaLights, "P3T3", 2, Visible) {
+  check_lambert_cases(Method::Hemisphere, 400000, 3300);
 }
 
-GRADED_TEST(LightSampling, ShadowsOnlyWhereAnOccluderBlocks, "P3T4", 1, Hidden) {
-  check_occluders(Method::Importance, 50000, 3410);
+// 50,000 estimates per configuration (relative standard errors 0.02% to
+// 0.46%, pooled 0.02%). Power (99%): a common bias of 0.14%, or 0.16% in the
+// best-resolved receiver alone.
+GRADED_TEST(LightSampling, MatchesLambertForAreaLights, "P3T4", 2, Visible) {
+  check_lambert_cases(Method::Importance, 50000, 3400);
 }
 
 GRADED_TEST(LightSampling, DeltaLightsAreExact, "P3T4", 1, Visible) {
@@ -117,6 +97,7 @@ GRADED_TEST(LightSampling, DeltaLightsAreExact, "P3T4", 1, Visible) {
   // (albedo/pi) Ld cos(theta). Behind the receiver: 0. A wall just behind
   // the point light (a shadow ray that does not stop at the light hits it), a
   // black quad beside the path (no false shadow), and one across it (shadow).
+  // Exact to 1e-9 relative: no statistics, any deviation fails.
   const double I = 3.0, Ld = 2.0;
   const Vec3 n = glm::normalize(Vec3(0.2, -0.1, 1));
   const RenderSettings settings = settings_with(8);  // ns_area_light is for area lights only
@@ -162,43 +143,19 @@ GRADED_TEST(LightSampling, DeltaLightsAreExact, "P3T4", 1, Visible) {
     Rng rng(test::seed(3420));
     for (int k = 0; k < 3; ++k) {  // deterministic: the same every time
       const Spectrum L = tracer.estimate_direct_lighting_importance(lit.aim.ray, lit.aim.isect, rng);
-      for (int ch = 0; ch < 3; ++ch)
-        EXPECT_NEAR(L[ch], expected, 1e-9 * expected + 1e-15) << c.name << ", channel " << ch;
+      for (int ch = 0; ch < 3; ++ch) {
+        const double rel = expected > 0.0 ? std::abs(L[ch] - expected) / expected : 0.0;
+        EXPECT_NEAR(L[ch], expected, 1e-9 * expected + 1e-15)
+            << c.name << ", channel " << ch
+            << (rel > 1e-9 && rel < 1e-2
+                    ? " (off by a relative " + std::to_string(rel) +
+                          ": sample the light from the hit point itself, r.at(isect.t), and use that point and "
+                          "the distance sample_L returns as they are; only the shadow ray's min_t = kRayEpsilon "
+                          "offsets anything, never the point or the light's distance)"
+                    : std::string());
+      }
     }
   }
-}
-
-GRADED_TEST(LightSampling, SumsOverLightsAveragingEachOnItsOwn, "P3T4", 1, Hidden) {
-  // Two area lights, a point light, a directional light and a sky (behind
-  // a black wall at x = 1.5 that blocks part of the sky and none of the
-  // other lights): the estimate is the sum of each light's own average, with
-  // ns_area_light = 4 samples for each area light and the sky. 40000
-  // estimates; one t test at alpha = 1e-5.
-  const Vec3 n = glm::normalize(Vec3(0.1, 0.1, 1));
-  const Vec3 c0(0, 0, 1), ex0(0.8, 0, 0), ey0(0, -0.6, 0);
-  const Vec3 c1(-0.6, 0.4, 0.8), ex1(0.2, 0, 0.05), ey1(0, -0.2, 0);
-  const Vec3 point(0.5, 0.7, 1.5), sun(0.3, -0.4, -1.0);  // neither is hidden by a light quad
-  const double Lp = 4.0, Lsun = 0.6, Lsky = 0.3, L1 = 20.0;
-  Lit lit = make_lit({0, 0, 0}, n, [&](Scene& s) {
-    s.add_area_light(Spectrum(kL), c0, ex0, ey0);
-    s.add_area_light(Spectrum(L1), c1, ex1, ey1);
-    s.add_light<PointLight>(Spectrum(Lp), point);
-    s.add_light<DirectionalLight>(Spectrum(Lsun), sun);
-    s.add_light<SkyLight>(Spectrum(Lsky));
-    s.add_quad({1.5, 0, 0.5}, {0, 0, 1.4}, {0, 2, 0}, s.add_bsdf<DiffuseBSDF>(Spectrum(0.0)));
-  });
-  const double E = parallelogram_irradiance({0, 0, 0}, n, c0, ex0, ey0, kL) +
-                   parallelogram_irradiance({0, 0, 0}, n, c1, ex1, ey1, L1) +
-                   Lp * glm::dot(n, glm::normalize(point)) / glm::dot(point, point) +
-                   Lsun * glm::dot(n, -glm::normalize(sun));
-  // The sky: the area lights and the wall hide parts of it (they are opaque
-  // to the sky's shadow rays): E_sky = Lsky (pi - PSA(wall) - PSA(lights)).
-  const double psa = polygon_irradiance({0, 0, 0}, n, parallelogram({1.5, 0, 0.5}, {0, 0, 1.4}, {0, 2, 0}), 1.0) +
-                     parallelogram_irradiance({0, 0, 0}, n, c0, ex0, ey0, 1.0) +
-                     parallelogram_irradiance({0, 0, 0}, n, c1, ex1, ey1, 1.0);
-  const double expected = lambert_out(E + Lsky * (kPi - psa));
-  stats::RunningStats st = run(lit, Method::Importance, settings_with(kNs), 40000, test::seed(3430));
-  EXPECT_TRUE(stats::mean_matches(st, expected, kAlphaTest, "light sampling, five lights"));
 }
 
 }  // namespace

@@ -19,6 +19,12 @@
 // lies in [0, 2 a Le]) and a continuation probability p >= a, or a small
 // depth, so that the path weight a^k / p^(k-1) stays bounded.
 //
+// Power: each statistical test states the smallest relative bias that fails
+// it with probability 99%, (z_{1-alpha/2} + z_0.99) x the relative standard
+// error of its checks (measured with PT_STATS_VERBOSE=1), and for a variance
+// test how far below its factor the true ratio must be to fail it with
+// probability 99%, factor x exp(-(z_{1-alpha} + z_0.99) se).
+//
 // Depth convention (handouts/part4.md): settings.max_ray_depth = m keeps
 // light that bounced up to m times (m = 0: emission seen directly, m = 1:
 // plus direct lighting, ...), and with accumulate_bounces off only bounce m.

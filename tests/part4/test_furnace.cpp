@@ -22,6 +22,7 @@
 // first bounce instead of the last multiplies Le a^m by a^(1-m) >= 1.25 for
 // m >= 2. Each is more than 100 standard errors.
 #include "common.h"
+#include "furnace_check.h"
 #include "support/graded.h"
 
 namespace pt {
@@ -29,26 +30,15 @@ namespace {
 
 using namespace test::part4;
 
-constexpr int kSamples = 50000;
 const double kAlbedos[] = {0.3, 0.5, 0.8};
-
-// One t test of `entry` against `expected` for the furnace of albedo a.
-::testing::AssertionResult furnace_check(double a, const RenderSettings& s, Entry e, double expected, double alpha,
-                                         uint64_t seed) {
-  Scene scene = make_white_furnace(a, kLe);
-  const Aim target = furnace_aim(scene);
-  stats::RunningStats st = sample(scene, target, s, e, kSamples, seed);
-  std::ostringstream what;
-  what << name(e) << " in the white furnace, albedo " << a << ", Le " << kLe << ", " << describe(s);
-  return stats::mean_matches(st, expected, alpha, what.str());
-}
 
 // ---- P4T1: at_least_one_bounce_radiance --------------------------------------
 
 GRADED_TEST(Furnace, EachDepthLimit, "P4T1", 3, Visible) {
   // at_least_one_bounce_radiance with r.depth = max_ray_depth = m returns
   // bounces 1..m: Le (a + ... + a^m). Russian roulette off (p = 1), so that
-  // only the recursion and its depth are tested here.
+  // only the recursion and its depth are tested here. Power (99%): a bias of
+  // 0.9% (the best-resolved configuration) to 1.9% (every configuration).
   const int depths[] = {1, 2, 3, 5};
   const double alpha = alpha_each(3 * 4);
   uint64_t seed = 4000;
@@ -63,6 +53,7 @@ GRADED_TEST(Furnace, EachDepthLimit, "P4T1", 3, Visible) {
 GRADED_TEST(Furnace, KeepsOnlyTheLastBounce, "P4T1", 2, Visible) {
   // accumulate_bounces off: at_least_one_bounce_radiance keeps only the
   // direct light of the last vertex (r.depth == 1), bounce m: Le a^m.
+  // Power (99%): a bias of 1.9% in any configuration.
   const int depths[] = {1, 2, 3, 4};
   const double alpha = alpha_each(3 * 4);
   uint64_t seed = 4100;
@@ -81,6 +72,7 @@ GRADED_TEST(Furnace, FullEstimate, "P4T3", 3, Visible) {
   // i.e. Le / (1 - a) to 1e-52. p = 0.7 (the default) for a = 0.3 and 0.5,
   // p = 0.9 for a = 0.8 (p >= a keeps every path weight a^k / p^(k-1) <= 1;
   // with p < a^2 the variance would grow without bound with the depth).
+  // Power (99%): a bias of 0.4% (a = 0.3) to 1.1% (a = 0.8).
   struct Case {
     double a, p;
   };
@@ -91,26 +83,6 @@ GRADED_TEST(Furnace, FullEstimate, "P4T3", 3, Visible) {
     EXPECT_TRUE(furnace_check(c.a, furnace_settings(1000, c.p), Entry::GlobalIllumination,
                               furnace_bounces(c.a, 0, 1000), alpha, test::seed(seed++)))
         << "expected Le / (1 - a): the emission seen directly plus every bounce";
-}
-
-GRADED_TEST(Furnace, DepthLimitsAndBounceIsolation, "P4T3", 2, Hidden) {
-  // est_radiance_global_illumination, p = 1: with accumulate_bounces,
-  // Le (1 + ... + a^m); without, bounce m alone, Le a^m, where bounce 0 is
-  // the emission seen directly (exactly Le, no noise) and is the only thing
-  // kept for m = 0 in both modes.
-  const int depths[] = {0, 1, 2, 3};
-  const double albedos[] = {0.3, 0.8};
-  const double alpha = alpha_each(2 * 4 * 2);
-  uint64_t seed = 4300;
-  for (double a : albedos)
-    for (int m : depths) {
-      EXPECT_TRUE(furnace_check(a, furnace_settings(m, 1.0, true), Entry::GlobalIllumination,
-                                furnace_bounces(a, 0, m), alpha, test::seed(seed++)))
-          << "accumulate_bounces on: expected Le (1 + a + ... + a^m)";
-      EXPECT_TRUE(furnace_check(a, furnace_settings(m, 1.0, false), Entry::GlobalIllumination,
-                                furnace_bounces(a, m, m), alpha, test::seed(seed++)))
-          << "accumulate_bounces off: expected Le a^m (bounce m alone; for m = 0 the emission seen directly)";
-    }
 }
 
 }  // namespace

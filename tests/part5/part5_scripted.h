@@ -24,6 +24,9 @@ using test::constant;
 using test::Script;
 using test::ScriptedTracer;
 
+// A grey sample: illuminance v, since the Rec. 709 weights sum to 1.
+inline Spectrum grey(double v) { return Spectrum(v); }
+
 // a, b, a, b, ...
 inline Script alternating(const Spectrum& a, const Spectrum& b) {
   std::ostringstream os;
@@ -100,6 +103,25 @@ inline void expect_stops_at(const Script& s, int max_samples, int samples_per_ba
     SCOPED_TRACE("expectation made here");                     \
     ::pt::test::part5::expect_stops_at(__VA_ARGS__);           \
   } while (0)
+
+// The scene of the raytrace_pixel_adaptive tests: no shapes (the scripted
+// tracer never intersects anything), a camera that is not at the origin.
+inline Scene scene_with_camera() {
+  Scene scene;
+  scene.camera = Camera(Vec3(1, 2, 3), Vec3(0, 0, 0), Vec3(0, 1, 0), 60.0, 45.0);
+  return scene;
+}
+
+inline RenderSettings adaptive_settings(int width, int height, int ns_aa, int batch, double tol) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  s.ns_aa = ns_aa;
+  s.adaptive = true;
+  s.samples_per_batch = batch;
+  s.max_tolerance = tol;
+  return s;
+}
 
 // The call raytrace_pixel_adaptive(x, y) on a scripted tracer, for failure messages.
 inline std::string describe(const ScriptedTracer& t, int x, int y) {

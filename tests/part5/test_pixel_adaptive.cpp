@@ -17,28 +17,13 @@
 namespace pt {
 namespace {
 
+using test::part5::adaptive_settings;
 using test::part5::alternating;
 using test::part5::constant;
 using test::part5::describe;
+using test::part5::scene_with_camera;
 using test::part5::ScriptedTracer;
 using test::part5::spectrum_near;
-
-Scene scene_with_camera() {
-  Scene scene;  // no shapes: the scripted tracer never intersects anything
-  scene.camera = Camera(Vec3(1, 2, 3), Vec3(0, 0, 0), Vec3(0, 1, 0), 60.0, 45.0);
-  return scene;
-}
-
-RenderSettings adaptive_settings(int width, int height, int ns_aa, int batch, double tol) {
-  RenderSettings s;
-  s.width = width;
-  s.height = height;
-  s.ns_aa = ns_aa;
-  s.adaptive = true;
-  s.samples_per_batch = batch;
-  s.max_tolerance = tol;
-  return s;
-}
 
 // Where a camera ray crosses the image, in pixel units: the inverse of
 // Camera::generate_ray((px / width), (py / height)), (0, 0) at the bottom-left.

@@ -20,6 +20,10 @@
 
 namespace pt::test::p1 {
 
+// Hit distances, points and normals of O(1) geometry come from a few dozen
+// flops: 1e-9 is generous for any formulation and far below any real mistake.
+constexpr double kTol = 1e-9;
+
 // ---------------------------------------------------------------- vectors --
 
 // `what` = actual, within tol of expected in every component; on failure the

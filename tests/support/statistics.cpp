@@ -185,6 +185,29 @@ MeanTestResult z_test_mean(const RunningStats& s, double expected, double sigma,
   return r;
 }
 
+MeanTestResult pooled_relative_bias(const std::vector<MeanAgainst>& samples, double alpha, const std::string& what) {
+  MeanTestResult r;
+  r.method = "pooled z";
+  r.what = what;
+  r.expected = 1.0;
+  r.alpha = alpha;
+  r.tolerance = default_rounding_tolerance(1.0);
+  double weight = 0.0, weighted = 0.0;
+  for (const MeanAgainst& m : samples) {
+    r.n += m.sample->count();
+    r.nonfinite += m.sample->nonfinite_count();
+    const double rse = m.expected != 0.0 ? m.sample->standard_error() / std::abs(m.expected) : 0.0;
+    if (!(rse > 0.0)) continue;
+    const double w = 1.0 / (rse * rse);
+    weight += w;
+    weighted += w * (m.sample->mean() - m.expected) / m.expected;
+  }
+  r.mean = weight > 0.0 ? 1.0 + weighted / weight : 1.0;
+  r.standard_error = weight > 0.0 ? 1.0 / std::sqrt(weight) : 0.0;
+  finish_mean_test(r, [](double z) { return normal_sf(z); });
+  return r;
+}
+
 namespace {
 // PT_STATS_VERBOSE=1 in the environment prints every statistical check, passed or not.
 void maybe_print(const std::string& line) {

@@ -142,6 +142,25 @@ MeanTestResult z_test_mean(const RunningStats& s, double expected, double sigma,
                                         const std::string& what = "");
 ::testing::AssertionResult check(const MeanTestResult& r);
 
+// One sample of estimates and the closed form of its mean.
+struct MeanAgainst {
+  const RunningStats* sample;
+  double expected;
+};
+
+// A bias shared by several configurations (a constant factor wrong in all of
+// them): a two-sided z test of H0 "the means have no common relative bias".
+// The statistic is the inverse-variance weighted mean of the relative
+// deviations (mean_i - expected_i) / expected_i, with standard error
+// 1 / sqrt(sum_i (expected_i / se_i)^2): smaller than every configuration's
+// own, so that a test of m configurations detects a bias common to all of
+// them that each separate test would miss. The result reads as a mean test
+// of the pooled ratio mean/expected against 1. Configurations whose expected
+// value is 0, or whose standard error is 0 (an exact estimator), are left out:
+// their own checks judge them. Any non-finite sample fails it.
+MeanTestResult pooled_relative_bias(const std::vector<MeanAgainst>& samples, double alpha,
+                                    const std::string& what = "");
+
 // ---------------------------------------------------------------------------
 // Variances of two independent samples
 

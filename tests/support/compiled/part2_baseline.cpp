@@ -1,3 +1,5 @@
+// The handout's baseline builder and its variants (support/part2_baseline.h).
+// A near-solution to P2T1: the student release ships it compiled only.
 #include "support/part2_baseline.h"
 
 #include <algorithm>

@@ -1,0 +1,118 @@
+# Writes the student release or the grading kit (cmake -P; see CMakeLists.txt).
+#   -DMODE=student|kit -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
+#   kit only: -DMANIFEST=<graded tests, JSON lines> -DPT_GRADE=<pt-grade binary>
+# Every file is chosen by an allowlist: what is not named here is not shipped.
+cmake_minimum_required(VERSION 3.22)
+foreach(v MODE SOURCE_DIR BINARY_DIR OUT)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "export.cmake: -D${v}=... is required")
+  endif()
+endforeach()
+
+set(S ${SOURCE_DIR})
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+
+# copy_tree(<dir relative to S> [EXCLUDE <regex>...]): every file below it.
+function(copy_tree rel)
+  cmake_parse_arguments(ARG "" "" "EXCLUDE" ${ARGN})
+  file(GLOB_RECURSE files LIST_DIRECTORIES false RELATIVE ${S} ${S}/${rel}/*)
+  foreach(f IN LISTS files)
+    set(skip OFF)
+    foreach(re IN LISTS ARG_EXCLUDE)
+      if(f MATCHES "${re}")
+        set(skip ON)
+      endif()
+    endforeach()
+    if(NOT skip)
+      get_filename_component(d ${f} DIRECTORY)
+      file(COPY ${S}/${f} DESTINATION ${OUT}/${d})
+    endif()
+  endforeach()
+endfunction()
+
+function(copy_file from to)
+  get_filename_component(d ${OUT}/${to} DIRECTORY)
+  file(MAKE_DIRECTORY ${d})
+  file(COPY_FILE ${from} ${OUT}/${to})
+endfunction()
+
+# Scenes and their reference images go to both: students compare with them,
+# the grader's report shows them.
+set(scene_excludes "/build/" "\\.blend1?$")
+
+if(MODE STREQUAL "student")
+  copy_file(${S}/tools/release/README.student.md README.md)
+  foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
+    copy_file(${S}/${f} ${f})
+  endforeach()
+  copy_tree(skeleton)
+  copy_tree(tasks)
+  copy_tree(scenes EXCLUDE ${scene_excludes})
+  copy_tree(handouts)
+  file(COPY ${S}/tests/CMakeLists.txt DESTINATION ${OUT}/tests)
+  # Test support, except what ships compiled (support/compiled/).
+  copy_tree(tests/support EXCLUDE "^tests/support/compiled/")
+  # Visible graded tests only: tests/partN/hidden/ stays with the instructor.
+  foreach(n 1 2 3 4 5)
+    copy_tree(tests/part${n} EXCLUDE "/hidden/")
+  endforeach()
+  copy_tree(tests/framework)
+  copy_tree(tests/cli)
+  # The grader, for `pt-grade run` on the student's own machine; not the
+  # instructor's threat model, kit or Gradescope packaging.
+  copy_tree(tests/autograder EXCLUDE "^tests/autograder/(kit|gradescope)/" "^tests/autograder/README\\.md$")
+  # The benchmark, without the ladder of traversals from the reference to Embree.
+  copy_tree(tests/bench EXCLUDE "/ladder\\.(h|cpp)$")
+  # The solution, compiled only.
+  file(GLOB libs ${BINARY_DIR}/prebuilt/lib/*.a)
+  foreach(lib IN LISTS libs)
+    get_filename_component(name ${lib} NAME)
+    copy_file(${lib} prebuilt/lib/${name})
+  endforeach()
+  copy_file(${S}/tools/release/README.prebuilt.md prebuilt/README.md)
+elseif(MODE STREQUAL "kit")
+  foreach(v MANIFEST PT_GRADE)
+    if(NOT DEFINED ${v})
+      message(FATAL_ERROR "export.cmake: MODE kit needs -D${v}=...")
+    endif()
+  endforeach()
+  copy_file(${S}/tests/autograder/kit/CMakeLists.txt CMakeLists.txt)
+  copy_file(${S}/tests/autograder/kit/README.md README.md)
+  # Headers a task file may include, and nothing else of the framework's source.
+  file(GLOB_RECURSE headers RELATIVE ${S}/skeleton ${S}/skeleton/*.h)
+  foreach(h IN LISTS headers)
+    copy_file(${S}/skeleton/${h} include/${h})
+  endforeach()
+  copy_file(${S}/skeleton/app/main.cpp src/main.cpp)
+  copy_tree(tasks)
+  copy_tree(scenes EXCLUDE ${scene_excludes})
+  copy_file(${MANIFEST} manifest.json)
+  copy_file(${PT_GRADE} bin/pt-grade)
+  file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
+  foreach(lib IN LISTS libs)
+    get_filename_component(name ${lib} NAME)
+    copy_file(${lib} lib/${name})
+    # Without debug information the kit is a tenth of the size: a submission's
+    # copy of it and its links are that much faster.
+    if(DEFINED OBJCOPY AND OBJCOPY)
+      execute_process(COMMAND ${OBJCOPY} --strip-debug ${OUT}/lib/${name} RESULT_VARIABLE rc)
+      if(NOT rc EQUAL 0)
+        message(FATAL_ERROR "export.cmake: ${OBJCOPY} --strip-debug ${name} failed")
+      endif()
+    endif()
+  endforeach()
+else()
+  message(FATAL_ERROR "export.cmake: MODE must be student or kit, not '${MODE}'")
+endif()
+
+if(DEFINED ARCHIVE)
+  get_filename_component(parent ${OUT} DIRECTORY)
+  get_filename_component(name ${OUT} NAME)
+  # Relative paths, so the archive unpacks into one folder of that name.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E tar czf ${ARCHIVE} ${name} WORKING_DIRECTORY ${parent}
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "export.cmake: could not write ${ARCHIVE}")
+  endif()
+endif()
