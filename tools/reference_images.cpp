@@ -204,7 +204,9 @@ int render_scene(const library::LibraryScene& s, const std::string& out_dir, int
                    {"max_depth", s.max_depth},  {"rr", s.rr},              {"seed", s.reference_seed},
                    {"seeds", "pass k (0 to passes - 1) uses seed + k"}};
   j["command"] = command;
-  j["pass_command"] = s.command(n0, s.reference_seed, "pass.png") + "   # pass 0; pass k: --seed " +
+  library::LibraryScene from_root = s;  // the command as run from the repository's root
+  from_root.path = relative_to_repo(s.path);
+  j["pass_command"] = from_root.command(n0, s.reference_seed, "pass.png") + "   # pass 0; pass k: --seed " +
                       std::to_string(s.reference_seed) + " + k; the stored mean is the average of the passes' EXRs";
   j["render_seconds"] = render_seconds;
   j["load_seconds"] = load_seconds;

@@ -1,5 +1,6 @@
 #include "support/scene_library.h"
 
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -96,10 +97,11 @@ RenderSettings LibraryScene::settings(int spp, uint64_t seed) const {
 }
 
 std::string LibraryScene::command(int spp, uint64_t seed, const std::string& output) const {
+  char rr_text[32];  // the shortest text that reads back as the same double
+  *std::to_chars(rr_text, rr_text + sizeof rr_text - 1, rr).ptr = '\0';
   std::ostringstream c;
-  c.precision(17);
   c << "pathtracer-reference " << quote(path) << " -r " << width << " " << height << " -s " << spp << " -l "
-    << light_samples << " -m " << max_depth << " --rr " << rr << " --seed " << seed << " -q -f " << quote(output);
+    << light_samples << " -m " << max_depth << " --rr " << rr_text << " --seed " << seed << " -q -f " << quote(output);
   return c.str();
 }
 
