@@ -9,7 +9,8 @@
 //    "check": {"samples": 16, "seed": 7}}
 // "file" is relative to scenes/, or, for a scene the build writes (the
 // procedural mesh), to <build>/scenes/ when the entry says
-// "generated": "<the command that writes it>". Unknown keys are errors.
+// "generated": "<tool> <arguments>" (tools/CMakeLists.txt runs that command
+// with "-o <build>/scenes/<stem of file>"). Unknown keys are errors.
 //
 // Reference images live in scenes/reference/<name>.exr (the mean),
 // <name>_sd.exr (per-sample standard deviation), <name>.json (the sidecar)
