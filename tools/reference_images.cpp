@@ -4,6 +4,7 @@
 //   pt-reference-images                       every scene, into scenes/reference/
 //   pt-reference-images --only cornell_bunny  one scene
 //   pt-reference-images --samples 256 --out /tmp/quick   a quick look (not for committing)
+//   pt-reference-images --validate-only       redo only the validation (below) of the stored images
 //
 // Per scene it renders K = samples / pass_samples independent passes (pass k
 // with seed `seed + k`, exactly `pathtracer-reference <scene> ... --seed
@@ -159,32 +160,67 @@ ordered_json validate(const std::vector<Pass>& kept, const Image& mean, const Im
   return v;
 }
 
-int render_scene(const library::LibraryScene& s, const std::string& out_dir, int samples, int threads, int keep,
-                 const std::string& command) {
-  const int n0 = s.pass_samples, passes = samples / n0;
-  std::fprintf(stderr, "%s: %s, %dx%d, %d spp in %d passes of %d, %d light samples, depth %d, rr %g, %d threads\n",
-               s.name.c_str(), relative_to_repo(s.path).c_str(), s.width, s.height, samples, passes, n0,
-               s.light_samples, s.max_depth, s.rr, threads);
+// Renders passes first..first+count-1 of the scene, handing each to `take`.
+template <class Take>
+double render_passes(const library::LibraryScene& s, const Scene& scene, int count, int threads, Take take) {
   auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  LoadedScene loaded = library::load(s);
-  for (const auto& w : loaded.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  const double load_seconds = elapsed();
-
-  error_model::PassMoments moments(s.width, s.height, n0);
-  std::vector<Pass> kept;
   double render_seconds = 0.0;
-  for (int k = 0; k < passes; ++k) {
-    RenderResult r = library::render(s, loaded.scene, n0, s.reference_seed + k, threads);
+  for (int k = 0; k < count; ++k) {
+    RenderResult r = library::render(s, scene, s.pass_samples, s.reference_seed + k, threads);
     if (!r.ok()) throw std::runtime_error(s.name + ": pass " + std::to_string(k) + ": " + r.error);
     if (r.nonfinite_pixels) throw std::runtime_error(s.name + ": pass " + std::to_string(k) + " has NaN pixels");
     render_seconds += r.seconds;
-    moments.add(r.image);
-    if (k < keep) kept.push_back(to_pass(r.image));
-    if ((k + 1) % std::max(1, passes / 20) == 0 || k + 1 == passes)
-      std::fprintf(stderr, "  %d/%d passes, %s, ETA %s\n", k + 1, passes, format_seconds(elapsed()).c_str(),
-                   format_seconds(elapsed() / (k + 1) * (passes - k - 1)).c_str());
+    take(k, r.image);
+    if ((k + 1) % std::max(1, count / 20) == 0 || k + 1 == count)
+      std::fprintf(stderr, "  %d/%d passes, %s, ETA %s\n", k + 1, count, format_seconds(elapsed()).c_str(),
+                   format_seconds(elapsed() / (k + 1) * (count - k - 1)).c_str());
   }
+  return render_seconds;
+}
+
+// The validation at 4, 16 and 64 spp (groups of 1, 4, 16 kept passes), printed and returned.
+ordered_json validations(const std::vector<Pass>& kept, const Image& mean, const Image& sd,
+                         const error_model::RelMSEModel& model, int passes, int n0) {
+  ordered_json v = ordered_json::array();
+  for (int g : {1, 4, 16}) {
+    ordered_json one = validate(kept, mean, sd, model, passes, n0, g, 1e-5);
+    if (one.is_null()) continue;
+    std::fprintf(stderr,
+                 "  validation at %d spp over %d renders: relMSE %.4g +- %.3g (model %.4g +- %.3g; max z %.2f, "
+                 "skewness %.2f, %d failed); region z sd %.3f, max |z| %.2f (%d failed)\n",
+                 one["spp"].get<int>(), one["renders"].get<int>(), one["relmse_mean"].get<double>(),
+                 one["relmse_sd"].get<double>(), one["model_expected"].get<double>(), one["model_sd"].get<double>(),
+                 one["relmse_z_max"].get<double>(), one["relmse_z_skewness"].get<double>(),
+                 one["relmse_failed"].get<int>(), one["region_z_sd"].get<double>(),
+                 one["region_z_max_abs"].get<double>(), one["region_failed"].get<int>());
+    v.push_back(one);
+  }
+  return v;
+}
+
+LoadedScene load_announced(const library::LibraryScene& s, int samples, int threads, const char* what) {
+  std::fprintf(stderr, "%s: %s, %dx%d, %s %d spp in %d passes of %d, %d light samples, depth %d, rr %g, %d threads\n",
+               s.name.c_str(), relative_to_repo(s.path).c_str(), s.width, s.height, what, samples,
+               samples / s.pass_samples, s.pass_samples, s.light_samples, s.max_depth, s.rr, threads);
+  LoadedScene loaded = library::load(s);
+  for (const auto& w : loaded.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return loaded;
+}
+
+void render_scene(const library::LibraryScene& s, const std::string& out_dir, int samples, int threads, int keep,
+                  const std::string& command) {
+  const int n0 = s.pass_samples, passes = samples / n0;
+  auto start = std::chrono::steady_clock::now();
+  LoadedScene loaded = load_announced(s, samples, threads, "rendering");
+  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  error_model::PassMoments moments(s.width, s.height, n0);
+  std::vector<Pass> kept;
+  const double render_seconds = render_passes(s, loaded.scene, passes, threads, [&](int k, const Image& img) {
+    moments.add(img);
+    if (k < keep) kept.push_back(to_pass(img));
+  });
   const Image mean = as_float(moments.mean()), sd = moments.sample_sd();
   const error_model::RelMSEModel model = moments.model(mean);
 
@@ -228,28 +264,32 @@ int render_scene(const library::LibraryScene& s, const std::string& out_dir, int
     e["reference_share"][std::to_string(n)] = model.reference_share(n);
   }
   j["error_model"] = e;
-  ordered_json v = ordered_json::array();
-  for (int g : {1, 4, 16}) {
-    ordered_json one = validate(kept, mean, sd, model, passes, n0, g, 1e-5);
-    if (!one.is_null()) v.push_back(one);
-  }
-  j["validation"] = v;
-  std::ofstream(p.sidecar) << j.dump(2) << "\n";
   std::fprintf(stderr, "  wrote %s (%ju bytes), %s (%ju), %s, %s; a = %.4g, expected relMSE at 16 spp %.4g\n",
                p.mean.c_str(), uintmax_t(fs::file_size(p.mean)), p.sd.c_str(), uintmax_t(fs::file_size(p.sd)),
                p.preview.c_str(), p.sidecar.c_str(), model.a, model.expected(16));
-  for (const auto& one : v)
-    std::fprintf(stderr,
-                 "  validation at %d spp over %d renders: relMSE %.4g +- %.3g (model %.4g +- %.3g; max z %.2f, "
-                 "skewness %.2f, %d failed); region z sd %.3f, max |z| %.2f (%d failed)\n",
-                 one["spp"].get<int>(), one["renders"].get<int>(), one["relmse_mean"].get<double>(),
-                 one["relmse_sd"].get<double>(), one["model_expected"].get<double>(), one["model_sd"].get<double>(),
-                 one["relmse_z_max"].get<double>(), one["relmse_z_skewness"].get<double>(),
-                 one["relmse_failed"].get<int>(), one["region_z_sd"].get<double>(),
-                 one["region_z_max_abs"].get<double>(), one["region_failed"].get<int>());
-  return 0;
+  j["validation"] = validations(kept, mean, sd, model, passes, n0);
+  std::ofstream(p.sidecar) << j.dump(2) << "\n";
 }
 
+// Re-renders only the first `keep` passes (the same seeds give the same
+// passes) and redoes the validation against the stored images and model:
+// after a change to the check or the model, without re-rendering everything.
+void revalidate_scene(const library::LibraryScene& s, const std::string& out_dir, int threads, int keep,
+                      const std::string& command) {
+  const library::ReferencePaths p = library::reference_paths(out_dir, s.name);
+  std::ifstream in(p.sidecar);
+  if (!in) throw std::runtime_error(p.sidecar + ": cannot open");
+  ordered_json j = ordered_json::parse(in);
+  const int passes = j.at("settings").at("passes").get<int>();
+  keep = std::min(keep, passes - 16);  // a leave-out reference needs passes beyond the kept ones
+  const library::ReferenceImage ref = library::read_reference(out_dir, s.name);
+  LoadedScene loaded = load_announced(s, keep * s.pass_samples, threads, "validating on");
+  std::vector<Pass> kept;
+  render_passes(s, loaded.scene, keep, threads, [&](int, const Image& img) { kept.push_back(to_pass(img)); });
+  j["validation"] = validations(kept, ref.mean, ref.sd, ref.model, passes, s.pass_samples);
+  j["validation_command"] = command;
+  std::ofstream(p.sidecar) << j.dump(2) << "\n";
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -266,6 +306,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--validation-passes", keep, "Passes kept in memory to validate the error model")
       ->check(CLI::Range(0, 4096));
+  bool validate_only = false;
+  app.add_flag("--validate-only", validate_only,
+               "Keep the stored images; re-render only the validation passes and rewrite the sidecars' validation");
   CLI11_PARSE(app, argc, argv);
 
   std::string command;
@@ -276,6 +319,10 @@ int main(int argc, char** argv) {
     for (const std::string& name : only) lib.find(name);  // unknown names fail before any render
     for (const auto& s : lib.scenes) {
       if (!only.empty() && std::find(only.begin(), only.end(), s.name) == only.end()) continue;
+      if (validate_only) {
+        revalidate_scene(s, out, threads, keep, command);
+        continue;
+      }
       int n = samples > 0 ? samples : s.reference_samples;
       n = std::max(2 * s.pass_samples, n / s.pass_samples * s.pass_samples);
       render_scene(s, out, n, threads, keep, command);
