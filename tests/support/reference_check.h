@@ -6,9 +6,9 @@
 // measured per-pixel variance (error_model.h). Two kinds of evidence:
 //
 //  1. relMSE against the model: S <= E[S] + z sd[S] (one-sided). Catches any
-//     large error, wherever it is; blind to a small uniform change (a 5%
-//     brightness change moves relMSE by about 0.0025, within the noise of a
-//     low-sample render).
+//     large error, wherever it is, but not every small uniform one: a 5%
+//     darker render also has 5% less noise, and its relMSE can come out lower
+//     than a correct render's (it does in five of the seven library scenes).
 //  2. Mean differences over regions, per channel: the whole image and each
 //     cell of a grid (4 x 4 by default). For region G and channel c,
 //       z = sum_G (T - R) / sqrt(sum_G sd^2 (1/n + 1/N)),
