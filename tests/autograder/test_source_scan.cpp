@@ -54,6 +54,10 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
       {"%:include \"../reference/x.cpp\"\n", 1},
       {"int x;\nasm(\".incbin \\\"/work/main/reference/part1.cpp\\\"\");\n", 2},
       {"asm(\".include \\\"x.s\\\"\");\n", 1},
+      // The assembler reads its directives in any case, and the compiler
+      // joins adjacent literals before the assembler sees them.
+      {"asm(\".INCBIN \\\"/etc/passwd\\\"\");\n", 1},
+      {"asm(\".inc\"\n    \"bin \\\"/etc/passwd\\\"\");\n", 1},
   };
   for (const auto& c : cases) {
     SourceScan s = scan_task_source(c.src, kFramework);
