@@ -170,6 +170,9 @@ const std::map<std::string, std::string>& flagged_identifiers() {
       t[s] = "ends the process";
     for (const char* s : {"signal", "sigaction", "setjmp", "longjmp", "siglongjmp"}) t[s] = "handles signals or jumps";
     for (const char* s : {"constructor", "destructor", "init_priority"}) t[s] = "code that runs before or after main";
+    // Attributes that put code where the loader runs it (.preinit_array, an
+    // ifunc resolver) or one name over another.
+    for (const char* s : {"section", "ifunc", "alias", "weakref"}) t[s] = "places code where the loader finds or runs it";
     t["grading"] = "names the grader's test support (pt::grading)";
     t["testing"] = "names GoogleTest's internals (::testing)";
     t["main"] = "names main";

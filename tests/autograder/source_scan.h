@@ -10,9 +10,9 @@
 //    file is not compiled: its part scores 0, with the reasons.
 //  * Flags, for an instructor to read (they never change a score): process
 //    control (fork, exec*, kill, ptrace, syscall, exit), asm, dlsym, "/proc",
-//    the environment, file output, signal handlers, constructor attributes,
-//    names of the test support (pt::grading, pt::test, ::testing), a
-//    definition of main.
+//    the environment, file output, signal handlers, constructor, section and
+//    ifunc attributes, names of the test support (pt::grading, pt::test,
+//    ::testing), a definition of main.
 //
 // The scanner follows the preprocessor's first phases (line splices,
 // comments, string and raw string literals, the %: digraph), so that a

@@ -98,13 +98,16 @@ TEST(SourceScan, FlagsWhatAnInstructorShouldRead) {
       "namespace pt { namespace test { int seed; } }\n"              // 13
       "int main(int, char**) { return 0; }\n"                        // 14
       "void o() { std::exit(0); }\n"                                 // 15
-      "void p() { ptrace(0, 0, 0, 0); }\n";                          // 16
+      "void p() { ptrace(0, 0, 0, 0); }\n"                           // 16
+      "__attribute__((section(\".preinit_array\"))) void (*q)() = 0;\n" // 17
+      "void r() __attribute__((ifunc(\"s\")));\n";                     // 18
   SourceScan s = scan_task_source(src, kFramework);
   EXPECT_TRUE(s.rejections.empty()) << lines(s.rejections);
   const std::vector<std::pair<int, std::string>> want = {
       {2, "fork"},     {3, "execv"},        {4, "kill"},    {5, "syscall"}, {6, "asm"},
       {7, "dlsym"},    {8, "/proc"},        {9, "getenv"},  {10, "ofstream"}, {11, "constructor"},
-      {12, "grading"}, {13, "test"},        {14, "main"},   {15, "exit"},    {16, "ptrace"}};
+      {12, "grading"}, {13, "test"},        {14, "main"},   {15, "exit"},    {16, "ptrace"},
+      {17, "section"}, {18, "ifunc"}};
   for (const auto& [line, word] : want) EXPECT_TRUE(mentions(s.flags, word, line)) << word << "\n" << lines(s.flags);
 }
 
