@@ -1,15 +1,21 @@
 #include "app/cli.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <thread>
+#include <vector>
 
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
+#include "app/command_line.h"
+#include "render/limits.h"
 #include "render/renderer.h"
 #include "scene/course_camera.h"
 #include "scene/scene_info.h"
@@ -48,6 +54,36 @@ std::string stem_of(const std::string& path) {
   return (p.parent_path() / p.stem()).string();
 }
 
+// Refuses, before anything is rendered, an output the writers could not
+// create: a directory, a missing directory, no permission. (A full disk shows
+// only when writing.) "" when the path looks writable.
+std::string check_writable(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  if (fs::is_directory(p, ec)) return path + ": is a directory";
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  if (!fs::is_directory(dir, ec)) return path + ": the directory " + dir.string() + " does not exist";
+  const bool exists = fs::exists(p, ec);
+  if (access(exists ? p.c_str() : dir.c_str(), W_OK) != 0) return path + ": cannot write: " + std::strerror(errno);
+  return "";
+}
+
+// -a BATCH TOLERANCE: "" when usable.
+std::string check_adaptive(const std::vector<double>& a) {
+  if (!(a[0] >= 1 && a[0] <= kMaxSamples && a[0] == std::floor(a[0])))
+    return "--adaptive: the batch size " + format_bound(a[0]) + " is not an integer in [1, " +
+           std::to_string(kMaxSamples) + "]";
+  if (!(std::isfinite(a[1]) && a[1] >= 0))
+    return "--adaptive: the tolerance " + format_bound(a[1]) + " is not a finite number >= 0";
+  return "";
+}
+
+int bad_input(const std::string& message) {
+  std::cerr << "error: " << message << "\n";
+  return kExitBadInput;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
@@ -56,40 +92,51 @@ int run_cli(int argc, char** argv) {
   std::string scene_path, output = "render.png", camera_path;
   std::vector<int> resolution;
   std::vector<double> adaptive;
-  int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, kMaxThreads);
   int accumulate = 1;
   double exposure = 0.0;
   bool quiet = false, course_view = false, scene_info = false;
 
   app.add_option("scene", scene_path, "Scene file (.json or .dae)")->required();
-  app.add_option("-s,--samples", s.ns_aa, "Samples per pixel (the cap with -a)")->check(CLI::PositiveNumber);
-  app.add_option("-l,--light-samples", s.ns_area_light, "Samples per area light")->check(CLI::PositiveNumber);
-  app.add_option("-m,--max-depth", s.max_ray_depth, "Maximum ray depth (bounces)")->check(CLI::NonNegativeNumber);
-  app.add_option("-t,--threads", threads, "Render threads")->check(CLI::PositiveNumber);
+  app.add_option("-s,--samples", s.ns_aa, "Samples per pixel (the cap with -a)")->check(within(1, kMaxSamples));
+  app.add_option("-l,--light-samples", s.ns_area_light, "Samples per area light")
+      ->check(within(1, kMaxLightSamples));
+  app.add_option("-m,--max-depth", s.max_ray_depth, "Maximum ray depth (bounces)")
+      ->check(within(0, kMaxRayDepth, "the recursion's stack bound"));
+  app.add_option("-t,--threads", threads, "Render threads")->check(within(1, kMaxThreads));
   app.add_option("-f,--file", output, "Output PNG; the EXR is written beside it");
-  app.add_option("-r,--resolution", resolution, "Image width and height")->expected(2)->check(CLI::PositiveNumber);
+  app.add_option("-r,--resolution", resolution, "Image width and height")->expected(2)->check(within(1, kMaxImageSide));
   app.add_option("-a,--adaptive", adaptive, "Adaptive sampling: samples per batch and max tolerance")->expected(2);
   app.add_flag("-H,--hemisphere", s.direct_hemisphere_sample, "Uniform hemisphere sampling for direct light");
   app.add_option("-o,--accumulate", accumulate, "1: sum all bounces; 0: only bounce number -m")
       ->check(CLI::IsMember({0, 1}));
   app.add_option("-c,--camera", camera_path, "Camera file replacing the scene's camera");
-  app.add_option("--rr", s.rr_continue_prob, "Russian roulette continuation probability")
-      ->check(CLI::Range(1e-3, 1.0));
-  app.add_option("--seed", s.seed, "Render seed");
-  app.add_option("--exposure", exposure, "PNG exposure in stops");
+  app.add_option("--rr", s.rr_continue_prob, "Russian roulette continuation probability")->check(within(1e-3, 1.0));
+  app.add_option("--seed", s.seed, "Render seed")->check(unsigned_integer());
+  app.add_option("--exposure", exposure, "PNG exposure in stops")->check(within(-64, 64));
   app.add_flag("-q,--quiet", quiet, "No progress line");
   app.add_flag("--course-camera", course_view,
                "Frame the scene as the course's viewer does (its bounding box, the camera's view direction)");
   app.add_flag("--scene-info", scene_info, "Print a summary of the scene as one JSON object and exit");
-  CLI11_PARSE(app, argc, argv);
+  if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   if (!resolution.empty()) s.width = resolution[0], s.height = resolution[1];
   if (!adaptive.empty()) {
+    if (std::string why = check_adaptive(adaptive); !why.empty()) return bad_input(why);
     s.adaptive = true;
-    s.samples_per_batch = std::max(1, int(adaptive[0]));
+    s.samples_per_batch = int(adaptive[0]);
     s.max_tolerance = adaptive[1];
   }
   s.accumulate_bounces = accumulate != 0;
+  // What the options cannot check one by one (the pixel count).
+  if (std::string why = check_render_limits(s, threads); !why.empty()) return bad_input(why);
+
+  const std::string exr_path = stem_of(output) + ".exr", rate_path = stem_of(output) + "_rate.png";
+  if (exr_path == output) return bad_input("-f names the PNG and the EXR goes beside it: -f " + stem_of(output) + ".png");
+  std::vector<std::string> outputs = {output, exr_path};
+  if (s.adaptive) outputs.push_back(rate_path);
+  for (const std::string& path : outputs)
+    if (std::string why = check_writable(path); !why.empty() && !scene_info) return bad_input(why);
 
   LoadedScene loaded;
   try {
@@ -98,8 +145,7 @@ int run_cli(int argc, char** argv) {
     Camera& camera = loaded.scene.camera;
     if (course_view) camera = course_camera(camera, loaded.scene.bounds(), s.width, s.height);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
+    return bad_input(e.what());
   }
   Scene& scene = loaded.scene;
   scene.camera.set_aspect(double(s.width) / s.height);
@@ -113,25 +159,34 @@ int run_cli(int argc, char** argv) {
                scene_path.c_str(), scene.primitives.size(), scene.triangle_count(), scene.lights.size(), s.width,
                s.height, s.ns_aa, s.adaptive ? " (adaptive cap)" : "", s.ns_area_light, s.max_ray_depth, threads);
   PathTracer tracer(scene, s);
-  RenderResult result = render(tracer, threads, quiet ? ProgressFn{} : ProgressFn(print_progress));
+  RenderResult result;
+  try {
+    result = render(tracer, threads, quiet ? ProgressFn{} : ProgressFn(print_progress));
+  } catch (const std::bad_alloc&) {
+    return bad_input("out of memory for a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " image");
+  }
+  if (result.threads > 0 && result.threads < threads)
+    std::fprintf(stderr, "warning: the system started only %d of the %d render threads asked for\n", result.threads,
+                 threads);
   if (!result.ok()) {
     std::cerr << "\nerror: render stopped: " << result.error << "\n";
     return 1;
   }
 
+  // Stops at the first file that cannot be written (the message names it);
+  // "wrote" only once all are.
   try {
     write_png(output, result.image, exposure);
-    write_exr(stem_of(output) + ".exr", result.image);
-    if (s.adaptive) write_png(stem_of(output) + "_rate.png", sample_rate_image(result.sample_counts, s.width, s.height, s.ns_aa));
+    write_exr(exr_path, result.image);
+    if (s.adaptive) write_png(rate_path, sample_rate_image(result.sample_counts, s.width, s.height, s.ns_aa));
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
+    return bad_input(e.what());
   }
 
   const WorkCounters& w = result.work;
   double rays = double(w.rays);
-  std::fprintf(stderr, "wrote %s and %s.exr%s\n", output.c_str(), stem_of(output).c_str(),
-               s.adaptive ? (" and " + stem_of(output) + "_rate.png").c_str() : "");
+  std::fprintf(stderr, "wrote %s and %s%s\n", output.c_str(), exr_path.c_str(),
+               s.adaptive ? (" and " + rate_path).c_str() : "");
   // Primitive tests are counted by the framework for every BVH; node visits
   // only by a BVH that counts them itself (the reference does).
   char nodes[64] = "node visits not counted by this BVH";

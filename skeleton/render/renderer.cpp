@@ -4,7 +4,10 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
-#include <thread>
+#include <string>
+
+#include "render/limits.h"
+#include "render/worker_threads.h"
 
 namespace pt {
 
@@ -15,10 +18,15 @@ constexpr int kTile = 16;
 RenderResult render(const PathTracer& tracer, int threads, const ProgressFn& progress) {
   const RenderSettings& s = tracer.settings;
   RenderResult result;
-  result.image = Image(s.width, s.height);
+  if (std::string why = check_render_limits(s, threads); !why.empty()) {
+    result.error = why;
+    return result;
+  }
+  result.image = Image(s.width, s.height);  // may throw std::bad_alloc: the caller says how large
   result.sample_counts.assign(size_t(s.width) * s.height, 0);
 
-  const int tiles_x = (s.width + kTile - 1) / kTile, tiles_y = (s.height + kTile - 1) / kTile;
+  // Within the limits, neither the tile counts nor their product overflow.
+  const int tiles_x = s.width / kTile + (s.width % kTile != 0), tiles_y = s.height / kTile + (s.height % kTile != 0);
   const int tiles = tiles_x * tiles_y;
   std::atomic<int> next_tile{0}, done_tiles{0};
   std::atomic<bool> failed{false};
@@ -64,11 +72,11 @@ RenderResult render(const PathTracer& tracer, int threads, const ProgressFn& pro
     result.nonfinite_pixels += nonfinite;
   };
 
-  threads = std::max(1, threads);
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
+  // Every worker, even with threads == 1, runs on a thread whose stack the
+  // depth bound was measured for (render/limits.h), not on the caller's.
+  std::string why;
+  result.threads = run_on_threads(threads, kRenderThreadStackBytes, worker, &why);
+  if (result.threads == 0) result.error = why;
   result.seconds = elapsed();
   return result;
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/input_file.h"
 #include "scene/scene_text.h"
 #include "scene/scene_loader.h"
 
@@ -54,15 +55,8 @@ XmlNode next_element(XmlNode n, XmlNode root) {
 
 ColladaDocument::ColladaDocument(std::string path, std::vector<std::string>* warnings, size_t max_warnings)
     : path_(std::move(path)), warnings_(warnings), max_warnings_(max_warnings) {
-  std::string bytes;
-  {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) throw SceneError(path_ + ": cannot open (" + std::strerror(errno) + ")");
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    if (in.bad()) throw SceneError(path_ + ": cannot open (read error)");
-    bytes = std::move(buf).str();
-  }
+  // A COLLADA scene carries its meshes: the mesh bound, checked before reading.
+  const std::string bytes = read_input_file(path_, kMaxMeshFileBytes, "a COLLADA scene");
   // parse_default expands only the five predefined entities and character
   // references (no DTD entities), so no file can blow up in memory here.
   pugi::xml_parse_result parsed = doc_.load_buffer(bytes.data(), bytes.size(), pugi::parse_default);

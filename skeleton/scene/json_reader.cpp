@@ -1,12 +1,10 @@
 #include "scene/json_reader.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
+#include "scene/input_file.h"
 #include "scene/scene_loader.h"
 
 namespace pt {
@@ -159,13 +157,15 @@ bool in_range(double v, Range r) {
 
 }  // namespace
 
-json parse_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open (" + std::strerror(errno) + ")");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string text = buf.str();
-  if (in.bad()) throw SceneError(path + ": cannot open (read error)");
+json parse_json_file(const std::string& path, const char* what) {
+  const std::string text = read_input_file(path, kMaxSceneFileBytes, what);
+  // nlohmann stops at a NUL byte as if the text ended there, so that whatever
+  // follows (the rest of the scene, or garbage) would be silently ignored.
+  if (size_t nul = text.find('\0'); nul != std::string::npos) {
+    TextPosition at = text_position(text, nul);
+    throw SceneError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                     ": a NUL byte (JSON is text; is this a binary or damaged file?)");
+  }
 
   DomBuilder dom;
   if (json::sax_parse(text, &dom)) return std::move(dom.root);
@@ -242,7 +242,10 @@ Vec3 JsonReader::nonzero_vec3(const json& j, const std::string& pointer) const {
 
 std::string JsonReader::string(const json& j, const std::string& pointer) const {
   if (!j.is_string()) fail(pointer, std::string("expected a string, got ") + with_article(j));
-  return j.get<std::string>();
+  std::string s = j.get<std::string>();
+  // "\u0000" is valid JSON, but a file name would end at it when opened.
+  if (s.find('\0') != std::string::npos) fail(pointer, "a string may not contain the NUL character (\\u0000)");
+  return s;
 }
 
 double JsonReader::number_or(const json& obj, const std::string& pointer, const char* key, double fallback,

@@ -16,10 +16,12 @@ namespace pt {
 
 using json = nlohmann::json;
 
-// Parses a whole file. Throws SceneError "path: cannot open", "path:L:C: ..."
-// for syntax errors and numbers too large for a double, and
-// "path: /pointer: duplicate key" (nlohmann would silently keep the last).
-json parse_json_file(const std::string& path);
+// Parses a whole file of at most kMaxSceneFileBytes; `what` names it in errors
+// ("a scene file", "a camera file"). Throws SceneError "path: cannot open: ...",
+// "path:L:C: ..." for syntax errors, NUL bytes and numbers too large for a
+// double, and "path: /pointer: duplicate key" (nlohmann would silently keep
+// the last).
+json parse_json_file(const std::string& path, const char* what);
 
 // Which numbers a field accepts. Every number must also be finite and at
 // most kMaxMagnitude in size (scene_text.h).

@@ -1,14 +1,13 @@
 #include "scene/obj_loader.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <tiny_obj_loader.h>
 
+#include "scene/input_file.h"
+#include "scene/obj_text_check.h"
 #include "scene/scene_loader.h"
 
 namespace pt {
@@ -24,6 +23,15 @@ class IgnoreMaterials : public tinyobj::MaterialReader {
                   std::string*, std::string*) override {
     libraries.push_back(name);
     return true;
+  }
+};
+
+// An istream over a string, without copying it (std::istringstream would).
+class StringStream : private std::streambuf, public std::istream {
+ public:
+  explicit StringStream(const std::string& s) : std::istream(this) {
+    char* p = const_cast<char*>(s.data());  // read only: the get area is never written
+    setg(p, p, p + s.size());
   }
 };
 
@@ -56,8 +64,9 @@ Vec3 MeshTransform::apply_to_normal(const Vec3& n) const {
 }
 
 Mesh load_obj(const std::string& path, const MeshTransform& transform, std::vector<std::string>* warnings) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open (" + std::strerror(errno) + ")");
+  const std::string text = read_input_file(path, kMaxMeshFileBytes, "a mesh file");
+  check_obj_text(text, path);
+  StringStream in(text);
 
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;

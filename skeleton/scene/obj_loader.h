@@ -25,10 +25,12 @@ struct MeshTransform {
 // objects and groups merged, `transform` applied. Keeps the file's normals when
 // every face corner has one (a vertex is split where its corners disagree);
 // otherwise leaves `normals` empty for Scene::add_mesh to compute.
-// Throws SceneError "path: ..." when the file cannot be read, does not parse,
-// refers to missing vertices or has no triangles. Appends to `warnings` what
-// it ignores (materials, lines and points, degenerate faces), each message
-// starting with the path.
+// Throws SceneError "path: ..." when the file cannot be read, is larger than
+// kMaxMeshFileBytes, does not parse, refers to missing vertices or has no
+// triangles, and "path:LINE: ..." at a line tinyobjloader would misread
+// (obj_text_check.h: NaN, malformed numbers or indices, huge faces). Appends
+// to `warnings` what it ignores (materials, lines and points, degenerate
+// faces), each message starting with the path.
 Mesh load_obj(const std::string& path, const MeshTransform& transform, std::vector<std::string>* warnings);
 
 }  // namespace pt

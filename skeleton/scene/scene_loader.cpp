@@ -10,6 +10,7 @@
 
 #include "render/settings.h"
 #include "scene/collada_loader.h"
+#include "scene/input_file.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
 
@@ -58,7 +59,7 @@ class JsonSceneLoader {
       : r_(path), dir_(fs::path(path).parent_path()), out_(out), scene_(out->scene) {}
 
   void load() {
-    json doc = parse_json_file(r_.file());
+    json doc = parse_json_file(r_.file(), "a scene file");
     r_.expect_object(doc, "", {"description", "camera", "materials", "lights", "shapes"});
     if (doc.contains("description")) r_.string(doc["description"], "/description");
     // Read even when absent, so that a scene without one gets the documented defaults.
@@ -162,7 +163,6 @@ class JsonSceneLoader {
     fs::path file = r_.string(r_.required(j, at, "file"), file_at);
     // Relative to the scene file, so that scenes load from any working directory.
     fs::path resolved = file.is_absolute() ? file : dir_ / file;
-    if (!fs::is_regular_file(resolved)) r_.fail(file_at, "cannot open mesh file " + resolved.string());
     MeshTransform transform = j.contains("transform") ? read_transform(j["transform"], child(at, "transform"))
                                                       : MeshTransform{};
     const BSDF* bsdf = material(j, at, "mesh");
@@ -230,9 +230,9 @@ std::string lowercase_extension(const std::string& path) {
 }  // namespace
 
 LoadedScene load_scene(const std::string& path, BuildBvh bvh) {
-  if (!fs::is_regular_file(path)) throw SceneError(path + ": cannot open");
   LoadedScene out;
   std::string ext = lowercase_extension(path);
+  check_input_path(path, "a scene file");
   if (ext == ".json") JsonSceneLoader(path, &out).load();
   else if (ext == ".dae") load_collada(path, &out);
   else throw SceneError(path + ": unknown scene format \"" + ext + "\" (expected .json or .dae)");
@@ -241,9 +241,8 @@ LoadedScene load_scene(const std::string& path, BuildBvh bvh) {
 }
 
 Camera load_camera(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw SceneError(path + ": cannot open");
   JsonReader r(path);
-  return read_camera(r, parse_json_file(path), "");
+  return read_camera(r, parse_json_file(path, "a camera file"), "");
 }
 
 }  // namespace pt

@@ -72,6 +72,7 @@ LandlockRules landlock_rules(const ChildArgs& a) {
   r.read = {"/usr", "/lib", "/lib64", "/lib32", "/libx32", "/bin", "/etc", "/proc", "/sys", "/dev"};
   r.read.insert(r.read.end(), a.plan->readable.begin(), a.plan->readable.end());
   r.write = {a.workdir};
+  if (!a.output_dir.empty()) r.write.push_back(a.output_dir);
   r.execute = {a.binary_path};
   if (const std::string loader = elf_interpreter(a.binary_path); !loader.empty()) r.execute.push_back(loader);
   r.devices = {"/dev/null"};

@@ -43,6 +43,7 @@ struct ChildArgs {
   bool probe = false;  // set everything up and report, but do not exec
   int status = -1, output = -1, verdicts = -1, key = -1, binary = -1;  // inherited descriptors (-1: none)
   std::string binary_path, workdir;
+  std::string output_dir;  // also writable, when not empty (RunRequest::output_dir)
   std::vector<char*> argv, envp;  // null-terminated
   uid_t outer_uid = 0;
   gid_t outer_gid = 0;

@@ -174,6 +174,7 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   a.binary = binary.fd;
   a.binary_path = req.binary;
   a.workdir = workdir;
+  a.output_dir = req.output_dir;
   for (auto& s : args) a.argv.push_back(s.data());
   a.argv.push_back(nullptr);
   for (auto& s : env) a.envp.push_back(s.data());
@@ -487,6 +488,14 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   }
   RunRequest absolute = request;  // the child resolves paths from its own working directory
   absolute.binary = fs::absolute(request.binary).lexically_normal().string();
+  if (!request.output_dir.empty()) {
+    absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
+    if (plan_->switch_user && ::chown(absolute.output_dir.c_str(), plan_->uid, plan_->gid) != 0) {
+      RunOutcome r;
+      r.exit = not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
+      return r;
+    }
+  }
   SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false);
   std::error_code ec;
   fs::remove_all(workdir, ec);

@@ -56,6 +56,10 @@ struct RunRequest {
   // descriptor 4 and whatever the run writes to descriptor 3 goes to
   // RunObserver::on_channel (verdicts.h).
   std::string key;
+  // When not empty, an existing folder the run may also write (its private
+  // working directory is discarded with it): where a render leaves its images.
+  // Handed to the sandbox user when the grader is root.
+  std::string output_dir;
 };
 
 struct Deadline {

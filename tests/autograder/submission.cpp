@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "html_report.h"
 #include "kit_build.h"
 #include "manifest.h"
 #include "redact.h"
@@ -25,13 +26,6 @@ namespace pt::grade {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The kit's tasks/ holds the untouched stubs: their names are the names a
 // submission's files must have.
@@ -150,9 +144,16 @@ int grade_submission(const SubmissionOptions& opt) {
       if (report.parts[i].part == part) return i;
     return report.parts.size();
   };
+  HtmlReport page;
+  page.title = fs::path(opt.path).filename().string();
+  page.report = &report;
+  page.handouts = index_handouts((kit / "handouts").string());
+  page.renders_note = "No renders yet.";
+  // Both reports are rewritten, whole and atomically, after every step.
   auto save = [&] {
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!opt.json_path.empty()) write_results_json(opt.json_path, report);
+    if (!opt.html_path.empty()) write_html_report(opt.html_path, page);
   };
   auto set_part = [&](int part, const std::string& why) {
     const size_t i = part_index(part);

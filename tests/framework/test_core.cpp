@@ -1,8 +1,13 @@
 // Core helpers: frames, warps, the random generator, image files.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
+
+#include <unistd.h>
 
 #include "core/frame.h"
 #include "core/rng.h"
@@ -80,6 +85,61 @@ TEST(ImageFiles, ExrRoundTripsAndPngWrites) {
   write_png((dir / "a.png").string(), img);
   EXPECT_GT(std::filesystem::file_size(dir / "a.png"), 0u);
   EXPECT_THROW(read_exr((dir / "missing.exr").string()), std::runtime_error);
+  std::filesystem::remove_all(dir);
+}
+
+// A write that fails is an error naming the file and the reason, never a
+// silent success (stb and tinyexr do not check their writes).
+TEST(ImageFiles, WriteErrorsNameTheFileAndTheReason) {
+  Image img(4, 4, Spectrum(0.5));
+  using Writer = void (*)(const std::string&, const Image&);
+  const Writer writers[] = {[](const std::string& p, const Image& i) { write_png(p, i); }, &write_exr};
+  for (Writer writer : writers) {
+    try {
+      writer("/dev/full", img);
+      ADD_FAILURE() << "writing to /dev/full succeeded";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("/dev/full: cannot write"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(writer("/nonexistent_dir_pt/a.png", img), std::runtime_error);
+  }
+}
+
+// read_exr refuses, before decoding, a file that is not an EXR and a header
+// that claims more pixels than any render may have (tinyexr would allocate
+// for it).
+TEST(ImageFiles, ReadExrRefusesWhatIsNotAnImageOfOurs) {
+  auto dir = std::filesystem::temp_directory_path() / ("pt_image_refuse_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Image img(4, 4, Spectrum(0.5));
+  write_png((dir / "a.png").string(), img);
+  try {
+    read_exr((dir / "a.png").string());
+    ADD_FAILURE() << "read a PNG as an EXR";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a.png: not an EXR image"), std::string::npos) << e.what();
+  }
+  // An uncompressed 4x4 EXR whose dataWindow (xMin yMin xMax yMax) is made
+  // to claim 100000 x 100000 pixels.
+  write_exr((dir / "a.exr").string(), img);
+  std::string bytes;
+  {
+    std::ifstream in(dir / "a.exr", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string key("dataWindow\0box2i\0", 17);
+  size_t at = bytes.find(key);
+  ASSERT_NE(at, std::string::npos);
+  int32_t box[4] = {0, 0, 99999, 99999};
+  bytes.replace(at + key.size() + 4, sizeof box, reinterpret_cast<const char*>(box), sizeof box);
+  std::ofstream(dir / "huge.exr", std::ios::binary) << bytes;
+  try {
+    read_exr((dir / "huge.exr").string());
+    ADD_FAILURE() << "read an EXR claiming 10^10 pixels";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.exr: EXR of 100000x100000 pixels"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -2,8 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <mutex>
+#include <set>
+
+#include <pthread.h>
 
 #include "core/not_implemented.h"
+#include "render/limits.h"
 #include "render/renderer.h"
 #include "support/scene_builders.h"
 
@@ -53,42 +58,39 @@ TEST(Renderer, RecordsSampleCountsAndWork) {
   EXPECT_GT(r.work.primitive_tests, 0u);
 }
 
-// A traversal written the way the Part 2 handout teaches, which bumps no
-// counter itself: the framework must still see its box tests (NodeBox) and its
-// primitive tests (the scene's Counted<> primitives), so that `pathtracer`
-// reports a student's real work per ray.
-struct HandoutTraversal {
-  const std::vector<Primitive*>& prims;
+// Every box test through node->bb and every call into a scene primitive must
+// reach the counters, whoever makes them: a student's traversal bumps no
+// counter itself, and `pathtracer` must still report its work per ray. The
+// calls are made here the way any traversal makes them, over every node.
+struct CountedCalls {
   uint64_t boxes = 0, primitive_calls = 0;
-  bool closest(const BVHNode* node, const Ray& r, Intersection* isect) {
-    double t0 = r.min_t, t1 = r.max_t;
-    ++boxes;
-    if (!node->bb.intersect(r, t0, t1)) return false;
-    bool hit = false;
-    if (node->is_leaf()) {
-      for (size_t i = node->start; i < node->end; ++i, ++primitive_calls) hit |= prims[i]->intersect(r, isect);
-      return hit;
+  void visit_all(const BVHNode* node, const std::vector<Primitive*>& prims, const Ray& r) {
+    std::vector<const BVHNode*> todo{node};
+    while (!todo.empty()) {
+      const BVHNode* n = todo.back();
+      todo.pop_back();
+      double t0 = r.min_t, t1 = r.max_t;
+      n->bb.intersect(r, t0, t1);
+      ++boxes;
+      Intersection isect;
+      for (size_t i = n->start; i < n->end && !n->l; ++i, ++primitive_calls) prims[i]->intersect(r, &isect);
+      if (n->l) todo.push_back(n->l.get());
+      if (n->r) todo.push_back(n->r.get());
     }
-    hit |= closest(node->l.get(), r, isect);
-    hit |= closest(node->r.get(), r, isect);
-    return hit;
   }
 };
 
-TEST(WorkCounters, FrameworkCountsAStudentTraversal) {
+TEST(WorkCounters, FrameworkCountsEveryBoxAndPrimitiveTest) {
   Scene scene = test::make_cornell_box();
-  HandoutTraversal traversal{scene.bvh->primitives()};
+  CountedCalls calls;
   take_work_counters();
   Rng rng(3);
-  for (int i = 0; i < 100; ++i) {
-    Ray r = scene.camera.generate_ray(rng.uniform(), rng.uniform());
-    Intersection isect;
-    EXPECT_TRUE(traversal.closest(scene.bvh->root(), r, &isect)) << "a camera ray into the closed box, " << r;
-  }
+  for (int i = 0; i < 20; ++i)
+    calls.visit_all(scene.bvh->root(), scene.bvh->primitives(), scene.camera.generate_ray(rng.uniform(), rng.uniform()));
   WorkCounters w = take_work_counters();
-  EXPECT_EQ(w.node_visits, traversal.boxes) << "each node->bb.intersect call is one node visit";
-  EXPECT_EQ(w.primitive_tests, traversal.primitive_calls) << "each call into a scene primitive is one test";
-  EXPECT_GT(traversal.primitive_calls, 100u);
+  EXPECT_EQ(w.node_visits, calls.boxes) << "each node->bb.intersect call is one node visit";
+  EXPECT_EQ(w.primitive_tests, calls.primitive_calls) << "each call into a scene primitive is one test";
+  EXPECT_GT(calls.primitive_calls, 100u);
 }
 
 // Radiance that is NaN in one column and infinite in another.
@@ -133,6 +135,71 @@ TEST(Renderer, ATaskExceptionStopsTheRenderWithItsMessage) {
   RenderResult r = render(tracer, 2);
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.error.find("not implemented: P4T3"), std::string::npos) << r.error;
+}
+
+// Settings beyond render/limits.h end in an error naming the bound, before
+// anything is allocated or rendered (the command line checks them first; this
+// is for every other caller).
+TEST(Renderer, RefusesSettingsBeyondTheLimits) {
+  Scene scene = test::make_cornell_box();
+  struct Case {
+    const char* what;
+    void (*edit)(RenderSettings&);
+    int threads;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"width past INT_MAX - 15", [](RenderSettings& s) { s.width = 2147483640; }, 1, "image width 2147483640 is not in [1, 16384]"},
+      {"too many pixels", [](RenderSettings& s) { s.width = s.height = 16384; }, 1, "at most 33554432"},
+      {"depth", [](RenderSettings& s) { s.max_ray_depth = kMaxRayDepth + 1; }, 1, "maximum ray depth 10001 is not in [0, 10000]"},
+      {"threads", [](RenderSettings&) {}, kMaxThreads + 1, "threads 1025 is not in [1, 1024]"},
+      {"no threads", [](RenderSettings&) {}, 0, "threads 0 is not in [1, 1024]"},
+      {"rr NaN", [](RenderSettings& s) { s.rr_continue_prob = std::nan(""); }, 1, "Russian roulette"},
+  };
+  for (const Case& c : cases) {
+    RenderSettings s = small_settings();
+    c.edit(s);
+    RenderResult r = render(PathTracer(scene, s), c.threads);
+    EXPECT_FALSE(r.ok()) << c.what;
+    EXPECT_NE(r.error.find(c.message), std::string::npos) << c.what << ": " << r.error;
+    EXPECT_TRUE(r.image.pixels.empty()) << c.what;
+  }
+}
+
+// Records the stack size of every thread that estimates a pixel.
+class StackSizeRecorder : public PathTracer {
+ public:
+  using PathTracer::PathTracer;
+  Spectrum est_radiance_global_illumination(const Ray&, Rng&) const override {
+    pthread_attr_t attr;
+    size_t size = 0;
+    if (pthread_getattr_np(pthread_self(), &attr) == 0) {
+      pthread_attr_getstacksize(&attr, &size);
+      pthread_attr_destroy(&attr);
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    stack_sizes.insert(size);
+    return Spectrum(1.0);
+  }
+  mutable std::mutex mutex;
+  mutable std::set<size_t> stack_sizes;
+};
+
+// The depth bound is measured against kRenderThreadStackBytes: every pixel,
+// with one thread too, must be estimated on a thread that has it (not on the
+// caller's thread, whose stack `ulimit -s` decides).
+TEST(Renderer, EstimatesOnThreadsWithTheStackTheDepthBoundAssumes) {
+  Scene scene = test::make_cornell_box();
+  for (int threads : {1, 3}) {
+    StackSizeRecorder tracer(scene, small_settings());
+    RenderResult r = render(tracer, threads);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.threads, threads);
+    ASSERT_FALSE(tracer.stack_sizes.empty());
+    for (size_t size : tracer.stack_sizes)
+      EXPECT_GE(size, kRenderThreadStackBytes) << threads << " threads: a pixel was estimated on a " << size
+                                               << "-byte stack";
+  }
 }
 
 }  // namespace

@@ -167,12 +167,13 @@ TEST(ShippedScenes, TestScenesHaveOneLightEach) {
 }
 
 // Whatever scene is added later to scenes/ or scenes/tests/ must load too,
-// without warnings. (Other folders may hold JSON that is not a scene.)
+// without warnings. (Other folders may hold JSON that is not a scene, and so
+// does scenes/library.json, the scene library's manifest.)
 TEST(ShippedScenes, EveryJsonSceneLoadsWithoutWarnings) {
   int n = 0;
   for (const fs::path& dir : {kScenes, kScenes / "tests"}) {
     for (const auto& entry : fs::directory_iterator(dir)) {
-      if (entry.path().extension() != ".json") continue;
+      if (entry.path().extension() != ".json" || entry.path().filename() == "library.json") continue;
       SCOPED_TRACE(entry.path().string());
       ++n;
       LoadedScene loaded;
@@ -383,12 +384,12 @@ TEST_F(SceneFiles, ObjMaterialsLinesAndPointsAreWarnedAbout) {
 
 TEST_F(SceneFiles, BadMeshFiles) {
   expect_content_error(with_shape(R"({"type": "mesh", "file": "meshes/nope.obj"})"), "/shapes/0/file",
-                       "cannot open mesh file " + (dir_ / "meshes" / "nope.obj").string());
+                       (dir_ / "meshes" / "nope.obj").string() + ": cannot open: no such file");
 
   write("zero_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
   std::string msg = error_of(with_shape(R"({"type": "mesh", "file": "zero_index.obj"})"));
   EXPECT_TRUE(contains(msg, ": /shapes/0/file: "));
-  EXPECT_TRUE(contains(msg, (dir_ / "zero_index.obj").string() + ": cannot parse OBJ"));
+  EXPECT_TRUE(contains(msg, (dir_ / "zero_index.obj").string() + ":4: vertex index 0"));
 
   write("empty.obj", "# nothing but vertices\nv 0 0 0\nv 1 0 0\n");
   msg = error_of(with_shape(R"({"type": "mesh", "file": "empty.obj"})"));
@@ -400,18 +401,55 @@ TEST_F(SceneFiles, BadMeshFiles) {
 
   write("past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
   msg = error_of(with_shape(R"({"type": "mesh", "file": "past_end.obj"})"));
-  EXPECT_TRUE(contains(msg, "past_end.obj: a face refers to vertex 4, but the file has 3"));
+  EXPECT_TRUE(contains(msg, "past_end.obj:4: a face refers to vertex 4, but the file has 3"));
 
   write("past_end_quad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 9\n");
   EXPECT_TRUE(contains(error_of(with_shape(R"({"type": "mesh", "file": "past_end_quad.obj"})")),
-                       "past_end_quad.obj: a face refers to a vertex"));
+                       "past_end_quad.obj:5: a face refers to vertex 9, but the file has 4"));
 
   write("bad_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
   EXPECT_TRUE(contains(error_of(with_shape(R"({"type": "mesh", "file": "bad_normal.obj"})")),
                        "bad_normal.obj: normal 1 is zero"));
 
   write("dir.obj/x", "");
-  expect_content_error(with_shape(R"({"type": "mesh", "file": "dir.obj"})"), "/shapes/0/file", "cannot open mesh file");
+  expect_content_error(with_shape(R"({"type": "mesh", "file": "dir.obj"})"), "/shapes/0/file",
+                       "dir.obj: is a directory, not a mesh file");
+}
+
+// The OBJ pre-check (obj_text_check.h) refuses what tinyobjloader would
+// misread, at its line; it must let through every form tinyobjloader reads in
+// full, or good files would be refused.
+TEST_F(SceneFiles, ObjCheckAcceptsEveryFormTinyobjReads) {
+  write("forms.obj",
+        "# a comment line, then numbers in every decimal form\r\n"
+        "v .5 -1. +2e-3\r\n"
+        "v 1E+2 0 0 # a comment after the values\n"
+        "v 0 1 0 0.2 0.4 0.6\r"
+        "v 0 0 1\n"
+        "vt 0.5 0.5\nvn 0 0 1\n"
+        "f 1/1/1 2/1/1 3/1/1\n"
+        "f -4//-1 -3//-1 -1//-1\n"
+        "f 1 2 3 4\n"
+        "f 5 6 7\n"  // refers to vertices defined below (legal in OBJ)
+        "v 0 0 2\nv 1 0 2\nv 0 1 2\n");
+  LoadedScene loaded = load_scene(write("s.json", with_shape(R"({"type": "mesh", "file": "forms.obj"})")));
+  EXPECT_EQ(loaded.scene.triangle_count(), 5u) << "a triangle, a triangle, a quad, a triangle";
+}
+
+TEST_F(SceneFiles, ObjCheckCountsLinesLikeTinyobj) {
+  // \r\n and a lone \r each end one line: the NaN is on line 4.
+  write("lines.obj", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\nv nan 0 0\nf 1 2 3\n");
+  EXPECT_TRUE(contains(error_of(with_shape(R"({"type": "mesh", "file": "lines.obj"})")),
+                       "lines.obj:4: vertex value \"nan\" is not a decimal number"));
+}
+
+TEST_F(SceneFiles, NulBytesAreRefused) {
+  std::string path = (dir_ / "scene.json").string();
+  const char text[] = "{\"shapes\": []}\n\0trailing";
+  EXPECT_TRUE(contains(error_of(std::string(text, sizeof text - 1)), path + ":2:1: a NUL byte"));
+  write("tri.obj", kTriangleObj);
+  expect_content_error(with_shape(R"({"type": "mesh", "file": "tri.obj\u0000.png"})"), "/shapes/0/file",
+                       "a string may not contain the NUL character");
 }
 
 // ---------------------------------------------------------------- syntax errors
@@ -455,7 +493,14 @@ TEST_F(SceneFiles, MissingOrUnusableFiles) {
     load_scene(missing);
     ADD_FAILURE() << "loaded a missing file";
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), missing + ": cannot open");
+    EXPECT_EQ(std::string(e.what()), missing + ": cannot open: no such file");
+  }
+  write("dir.json/inside", "");
+  try {
+    load_scene(dir_.string() + "/dir.json");
+    ADD_FAILURE() << "loaded a directory";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), dir_.string() + "/dir.json: is a directory, not a scene file");
   }
   EXPECT_TRUE(contains(error_of(kMinimal, "scene.obj"), "unknown scene format \".obj\" (expected .json or .dae)"));
 }

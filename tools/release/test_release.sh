@@ -7,9 +7,9 @@
 #     its task (pt-grade check-stubs, per part);
 #  5. the reference's task files, copied in as a student's, earn every visible
 #     point (pt-grade run --json, then expect_score.cmake).
-# Usage: test_release.sh ARCHIVE REFERENCE_DIR RELEASE_CHECK MANIFEST WORKDIR
+# Usage: test_release.sh ARCHIVE CHECKOUT RELEASE_CHECK MANIFEST WORKDIR
 set -euo pipefail
-archive=$1 reference=$2 release_check=$3 manifest=$4 work=$5
+archive=$1 source=$2 release_check=$3 manifest=$4 work=$5
 here=$(cd "$(dirname "$0")" && pwd)
 
 rm -rf "$work"
@@ -18,7 +18,7 @@ tar xzf "$archive" -C "$work"
 cd "$work/student-release"
 
 echo "== 2. no solution in the release"
-"$release_check" --release . --reference "$reference" --manifest "$manifest"
+"$release_check" --release . --source "$source" --manifest "$manifest"
 
 echo "== 3. the README's set-up commands"
 # The fenced block under '## Set up': each line that is a command (comments off).
@@ -36,7 +36,7 @@ for n in 1 2 3 4 5; do
 done
 
 echo "== 5. the reference's task files earn every visible point"
-cp "$reference"/part*.cpp tasks/
+cp "$source"/reference/part*.cpp tasks/
 cmake --build --preset default
 "$grade" run --json reference-results.json
 cmake -DRESULTS=reference-results.json -P "$here/expect_score.cmake"

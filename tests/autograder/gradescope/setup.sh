@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Gradescope's image set-up (autograder.zip's setup.sh, run once as root when
+# the image is built): installs the Debian/Ubuntu packages and builds the
+# grading kit from the course's source: the framework, the graded tests
+# (hidden ones included), the solution compiled only, the manifest, pt-grade.
+# The solution's source stays readable by root only: graded code runs as an
+# unprivileged user and could not read it even where Landlock is missing.
+set -euo pipefail
+root=${PT_GRADESCOPE_ROOT:-/autograder}
+src="$root/source/pathtracer"
+cd "$src"
+./setup.sh --deps-only
+cmake --preset default -DCMAKE_BUILD_TYPE=Release  # no debug information: a faster image build
+cmake --build --preset default --target grader-kit
+chmod -R go-rwx "$src/reference"
+echo "grading kit ready: $src/build/grader-kit"

@@ -1,0 +1,49 @@
+#pragma once
+// The report a person reads (issue 8 section 4): one self-contained HTML page
+// per submission (no scripts, no outside files: images are inlined), with
+//  * the score per part and per task;
+//  * each failing test with its message, what the handout's grading table
+//    says it checks and the handout section of its task;
+//  * the submission's renders of the library scenes beside the stored
+//    reference images, a false-colour difference image and relMSE, with an
+//    image whose error is far beyond what its sample count explains marked,
+//    and the part it most likely points at;
+//  * what the instructor should read: source flags, build times, the sandbox
+//    layers that were active or missing, notes.
+// Hidden tests are shown with their messages: the page is the instructor's
+// (students see results.json on Gradescope, where hidden tests stay hidden).
+#include <string>
+#include <vector>
+
+#include "handout_index.h"
+#include "report.h"
+
+namespace pt::grade {
+
+struct RenderComparison {
+  std::string scene;     // library name
+  std::string purpose;   // one line: what the scene is for
+  std::string settings;  // e.g. "256x192, 16 spp, depth 5"
+  std::string student_png, reference_png, difference_png;  // files to inline ("" when missing)
+  double relmse = -1, expected_relmse = -1, bound = -1;    // < 0: not measured
+  std::vector<int> student_parts;  // parts of the submission this render used
+  bool flagged = false;            // relmse above bound
+  std::string suspect;             // "part 3 (direct illumination)": what the error most likely points at
+  std::string error;               // the render failed: why
+};
+
+struct HtmlReport {
+  std::string title;  // e.g. the submission's file name
+  const Report* report = nullptr;
+  HandoutIndex handouts;
+  std::vector<RenderComparison> renders;
+  std::string renders_note;  // why there are none, or how they were made
+};
+
+// Writes the page atomically; throws std::runtime_error naming the file.
+void write_html_report(const std::string& path, const HtmlReport& page);
+
+// Base64 of a file's bytes ("" when it cannot be read): for data: URIs.
+std::string base64_file(const std::string& path);
+
+}  // namespace pt::grade

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# pt-release-check must fail on a release that leaks (ctest: release:check-catches-leaks):
+# a telling line of the reference pasted into a shipped test, a hidden test's
+# name in a comment, and a hidden/ folder, each alone.
+# Usage: test_release_check.sh RELEASE_DIR CHECKOUT RELEASE_CHECK MANIFEST WORKDIR
+set -euo pipefail
+release=$1 source=$2 check=$3 manifest=$4 work=$5
+leak() {  # leak NAME COMMAND...: copy the release, apply COMMAND in it, expect a finding
+  local name=$1; shift
+  rm -rf "$work/$name" && mkdir -p "$work" && cp -r "$release" "$work/$name"
+  (cd "$work/$name" && eval "$@")
+  if "$check" --release "$work/$name" --source "$source" --manifest "$manifest" > "$work/$name.out"; then
+    echo "pt-release-check missed the leak '$name'"; cat "$work/$name.out"; exit 1
+  fi
+  echo "caught '$name': $(sed -n 2p "$work/$name.out")"
+}
+line=$(grep -hF '* n1() +' "$source"/reference/part1_raygen_intersect.cpp | head -1)
+[ -n "$line" ] || { echo "the reference line this test pastes is gone: choose another"; exit 1; }
+leak solution_line "printf '%s\n' '$line' >> tests/support/scene_builders.cpp"
+hidden=$(awk -F'"' '/"test":/{t=$4} /"visibility": *"hidden"/{print t; exit}' "$manifest")
+[ -n "$hidden" ] || { echo "no hidden test in $manifest"; exit 1; }
+leak hidden_name "echo '// see $hidden' >> tests/part1/test_camera.cpp"
+leak hidden_folder "mkdir -p tests/part1/hidden && touch tests/part1/hidden/x.cpp"
+rm -rf "$work"
