@@ -21,6 +21,8 @@
 // that the submission does not itself hold appears in it; and no process of
 // the run is left. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer
 // the case needs is missing here), 2 could not check.
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -82,25 +84,54 @@ std::string argument_of(const std::vector<std::string>& command, const std::stri
   return "";
 }
 
-// Processes (other than this one) for which `matches(command line, working
-// directory)` holds; each is named on standard output.
-template <class Matches>
-int survivors(Matches matches) {
-  int n = 0;
+// The processes descended from this one that are still alive (zombies are
+// dead: only their exit status waits to be read), each named on standard
+// output when `say`. This program is a child subreaper (main), so whatever the grader
+// started, at any depth, is still its descendant after the grader has gone,
+// daemons included; another test's processes never are, even when it grades
+// the same binary at the same time.
+std::vector<pid_t> live_descendants(bool say) {
+  std::map<pid_t, std::vector<pid_t>> children;
+  std::map<pid_t, std::string> cmdlines;
   std::error_code ec;
-  const std::string self = std::to_string(::getpid());
   for (const auto& entry : fs::directory_iterator("/proc", ec)) {
-    const std::string pid = entry.path().filename();
-    if (pid == self || pid.find_first_not_of("0123456789") != std::string::npos) continue;  // not self, thread-self
+    const std::string name = entry.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    // /proc/PID/stat: "pid (comm) state ppid ...", comm may hold spaces and parentheses.
+    const std::string stat = read_file(entry.path() / "stat");
+    const size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 1));
+    char state = 0;
+    pid_t ppid = 0;
+    if (!(rest >> state >> ppid) || state == 'Z' || state == 'X') continue;
+    const pid_t pid = std::stoi(name);
+    children[ppid].push_back(pid);
     std::string cmdline = read_file(entry.path() / "cmdline");
-    std::error_code no_cwd;
-    const std::string cwd = fs::read_symlink(entry.path() / "cwd", no_cwd).string();
-    if (cmdline.empty() || !matches(cmdline, cwd)) continue;
     std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    std::printf("left running: %s %s\n", pid.c_str(), cmdline.substr(0, 200).c_str());
-    ++n;
+    cmdlines[pid] = cmdline.substr(0, 200);
   }
-  return n;
+  std::vector<pid_t> found, todo{::getpid()};
+  while (!todo.empty()) {
+    const pid_t pid = todo.back();
+    todo.pop_back();
+    for (pid_t child : children[pid]) {
+      found.push_back(child);
+      todo.push_back(child);
+    }
+  }
+  if (say)
+    for (pid_t pid : found) std::printf("left running: %d %s\n", pid, cmdlines[pid].c_str());
+  return found;
+}
+
+// Ends what a failed case left behind (a stopped tree cannot refill itself),
+// so that a failing test does not leave a fork bomb on the machine.
+void end_descendants(const std::vector<pid_t>& pids) {
+  for (pid_t pid : pids) ::kill(pid, SIGSTOP);
+  for (pid_t pid : pids) ::kill(pid, SIGKILL);
+  while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+  }
 }
 
 // The zip a "zip" case submits: each entry is {"name", and one of "from" (a
@@ -237,6 +268,9 @@ int main(int argc, char** argv) {
     fs::remove_all(work, ec);
   }
 
+  // Orphans of the grader's runs are handed to this program, not to init: the
+  // process check below finds them whatever they have become.
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   ::unlink(results_path.c_str());
   const double kill_after = expect.value("kill_grader_after", 0.0);
   const int status = run_command(command, nullptr, kill_after);
@@ -249,19 +283,18 @@ int main(int argc, char** argv) {
   c.expect(status == want_status,
            "the grader exited with status " + std::to_string(status) + ", not " + std::to_string(want_status));
   // A grader that returns has killed every process of its runs; one that is
-  // killed takes them with it within moments (the warden's death signal).
-  if (kill_after > 0) std::this_thread::sleep_for(std::chrono::seconds(1));
-  const std::string binary = argument_of(command, "--binary");
-  int left = 0;
-  if (!binary.empty()) {
-    const std::string path = binary.substr(binary.find('=') + 1);
-    left = survivors([&](const std::string& cmdline, const std::string&) { return cmdline.c_str() == path; });
-  } else if (!work.empty()) {  // the build's processes and the test binaries name the work folder, or work in it
-    const std::string folder = fs::absolute(work).lexically_normal().string();
-    left = survivors([&](const std::string& cmdline, const std::string& cwd) {
-      return cmdline.find(folder) != std::string::npos || cwd.rfind(folder, 0) == 0;
-    });
+  // killed takes them with it within moments (the warden's and the build's
+  // death signals): up to 10 s on a loaded machine, where a process killed
+  // may wait to be scheduled before it dies. A daemon that escaped stays.
+  std::vector<pid_t> left_pids;
+  if (kill_after > 0) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!live_descendants(false).empty() && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
+  left_pids = live_descendants(true);
+  end_descendants(left_pids);
+  const size_t left = left_pids.size();
   c.expect(left == 0, std::to_string(left) + " process(es) of the run outlived the grader");
   if (!work.empty() && kill_after == 0) {
     std::error_code ec;
@@ -275,6 +308,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     c.expect(false, std::string("results.json does not parse: ") + e.what());
   }
+  if (!results.is_object()) results = json::object();  // checked below as a report that lists nothing
   const json& pt = results.is_object() ? results["extra_data"]["pt_grade"] : json();
   c.expect(pt.is_object() && pt.value("complete", false) == (kill_after == 0),
            kill_after > 0 ? "results.json says it is complete, yet the grader was killed"
