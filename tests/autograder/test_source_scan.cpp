@@ -46,6 +46,8 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
       {"#define F \"../reference/x.cpp\"\n#include F\n", 2},  // computed
       {"#include_next <cmath>\n", 1},
       {"#import \"core/vec.h\"\n", 1},
+      // C23's #embed (GCC 15, Clang 19) reads any file into an initializer.
+      {"const char s[] = {\n#embed \"../reference/x.cpp\"\n};\n", 2},
       {"#include <glm/../../reference/x.cpp>\n", 1},
       // A splice joins the two lines for the preprocessor, and so for the scanner.
       {"#inc\\\nlude \"../reference/x.cpp\"\n", 1},
