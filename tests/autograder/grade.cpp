@@ -43,7 +43,7 @@ PartManifest list_tests(int part, const std::string& binary, Sandbox& sandbox) {
     void on_channel(std::string_view) override {}
     Deadline deadline() const override { return {end, 60}; }
   } wait;
-  const RunOutcome r = sandbox.run({binary, {"--pt_list_graded"}, ""}, wait);
+  const RunOutcome r = sandbox.run({binary, {"--pt_list_graded"}, "", ""}, wait);
   if (!r.exit.exited_ok())
     throw std::runtime_error(binary + " --pt_list_graded " + r.exit.describe() + ":\n" + r.output.substr(0, 2000));
   try {
@@ -306,6 +306,8 @@ int main(int argc, char** argv) {
   submission_cmd->add_option("--work", sub.work, "folder for the build tree (default: TMPDIR)")->type_name("DIR");
   submission_cmd->add_flag("--keep-work", sub.keep_work, "keep the build tree");
   submission_cmd->add_flag("--no-renders", [&](std::int64_t) { sub.renders = false; }, "no renders in the report");
+  submission_cmd->add_option("--render-seconds", sub.render_seconds, "time for the report's builds and renders together")
+      ->check(CLI::Range(5.0, 3600.0));
   submission_cmd->add_option("--build-timeout", sub.build_seconds, "time allowed to build one part")
       ->check(seconds)
       ->type_name("SECONDS")

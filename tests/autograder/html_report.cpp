@@ -201,7 +201,11 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
     h << "</p>\n<div class=renders><figure>" << image(c.student_png, "submission") << "<figcaption>submission</figcaption></figure>"
       << "<figure>" << image(c.reference_png, "reference") << "<figcaption>stored reference</figcaption></figure>"
       << "<figure>" << image(c.difference_png, "difference")
-      << "<figcaption>|difference| (false colour, red = the 99th percentile)</figcaption></figure></div>\n";
+      << "<figcaption>|difference| of illuminance, false colour: red = "
+      << (c.difference_scale > 0 ? num(c.difference_scale, "%.3g") + ", twice the 99th percentile of a correct render's noise"
+                                 : std::string("the 99th percentile"))
+      << "</figcaption></figure></div>\n";
+    if (!c.detail.empty()) h << "<p class=muted>" << esc(c.detail) << "</p>\n";
   }
 
   // For the instructor.

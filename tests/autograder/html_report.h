@@ -30,6 +30,8 @@ struct RenderComparison {
   bool flagged = false;            // relmse above bound
   std::string suspect;             // "part 3 (direct illumination)": what the error most likely points at
   std::string error;               // the render failed: why
+  std::string detail;              // the check's own account: every number it used
+  double difference_scale = -1;    // what full red means in the difference image
 };
 
 struct HtmlReport {

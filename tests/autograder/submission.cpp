@@ -18,6 +18,7 @@
 #include "manifest.h"
 #include "redact.h"
 #include "report.h"
+#include "report_renders.h"
 #include "source_scan.h"
 #include "submission_files.h"
 
@@ -148,7 +149,7 @@ int grade_submission(const SubmissionOptions& opt) {
   page.title = fs::path(opt.path).filename().string();
   page.report = &report;
   page.handouts = index_handouts((kit / "handouts").string());
-  page.renders_note = "No renders yet.";
+  page.renders_note = "No renders yet: the parts are graded first.";
   // Both reports are rewritten, whole and atomically, after every step.
   auto save = [&] {
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -230,6 +231,7 @@ int grade_submission(const SubmissionOptions& opt) {
   if (!buildable.empty() && !kit_build.unconfined_reason().empty())
     report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
                            "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
+  std::string renders_dir;  // made with the renders, removed with the tree
   if (!buildable.empty()) {
     std::string out;
     const int rc = kit_build.run({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
@@ -291,6 +293,39 @@ int grade_submission(const SubmissionOptions& opt) {
           grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, binary + ".grade.log", redactor);
       save();  // every process of that run is dead by now
     }
+    // 6. The renders of the report.
+    if (opt.renders && !opt.html_path.empty()) {
+      RenderJob job;
+      job.kit = kit.string();
+      job.tree = tree.string();
+      job.configure_parts = parts_list;
+      job.part_names.assign(6, "");
+      for (int n = 1; n <= 5; ++n)
+        job.part_names[n] = "part " + std::to_string(n) + (expected.count(n) ? " (tasks/" + expected.at(n) + ")" : "");
+      for (const auto& p : report.parts)
+        if (binaries.count(p.part) && p.earned() > 0) job.student_parts.insert(p.part);
+      job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
+      job.build_seconds = opt.build_seconds;
+      std::string renders_pattern = (work / "pt-renders-XXXXXX").string();
+      if (::mkdtemp(renders_pattern.data())) renders_dir = job.renders_dir = renders_pattern;
+      if (renders_dir.empty()) {
+        page.renders_note = "No renders: cannot create a folder in " + work.string();
+      } else if (job.seconds < 5) {
+        page.renders_note = "No renders: the submission's time budget ran out.";
+      } else {
+        page.renders_note = "Rendering the scene library...";
+        save();
+        // The renderer is built from the same hostile task files: confined the same way.
+        auto build = [&](const std::vector<std::string>& argv, double seconds, std::string* output) {
+          return kit_build.run(argv, seconds, output);
+        };
+        render_library(job, build, sandbox, page, &report.notes);
+      }
+    } else {
+      page.renders_note = "No renders: turned off (--no-renders).";
+    }
+  } else {
+    page.renders_note = "No renders: no part of the submission built.";
   }
   report.complete = true;
   save();
@@ -298,8 +333,10 @@ int grade_submission(const SubmissionOptions& opt) {
   if (!opt.keep_work) {
     std::error_code ec;
     fs::remove_all(tree, ec);
+    if (!renders_dir.empty()) fs::remove_all(renders_dir, ec);
   } else {
     std::printf("build tree kept: %s\n", tree.c_str());
+    if (!renders_dir.empty()) std::printf("renders kept: %s\n", renders_dir.c_str());
   }
   return 0;
 }

@@ -96,13 +96,20 @@ RenderSettings LibraryScene::settings(int spp, uint64_t seed) const {
   return s;
 }
 
-std::string LibraryScene::command(int spp, uint64_t seed, const std::string& output) const {
+std::vector<std::string> LibraryScene::arguments(int spp, uint64_t seed, const std::string& output) const {
   char rr_text[32];  // the shortest text that reads back as the same double
   *std::to_chars(rr_text, rr_text + sizeof rr_text - 1, rr).ptr = '\0';
-  std::ostringstream c;
-  c << "pathtracer-reference " << quote(path) << " -r " << width << " " << height << " -s " << spp << " -l "
-    << light_samples << " -m " << max_depth << " --rr " << rr_text << " --seed " << seed << " -q -f " << quote(output);
-  return c.str();
+  return {path, "-r", std::to_string(width), std::to_string(height), "-s", std::to_string(spp), "-l",
+          std::to_string(light_samples), "-m", std::to_string(max_depth), "--rr", rr_text, "--seed",
+          std::to_string(seed), "-q", "-f", output};
+}
+
+std::string LibraryScene::command(int spp, uint64_t seed, const std::string& output) const {
+  const std::vector<std::string> args = arguments(spp, seed, output);
+  std::string c = "pathtracer-reference";
+  for (size_t i = 0; i < args.size(); ++i)
+    c += " " + (i == 0 || i + 1 == args.size() ? quote(args[i]) : args[i]);
+  return c;
 }
 
 const LibraryScene& Library::find(const std::string& name) const {

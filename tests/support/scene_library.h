@@ -49,6 +49,8 @@ struct LibraryScene {
   // The `pathtracer-reference` command line that renders exactly what
   // render() below renders (same image, bit for bit), writing `output`.
   std::string command(int spp, uint64_t seed, const std::string& output) const;
+  // The same, as the arguments of any build's `pathtracer` (argv[1..]).
+  std::vector<std::string> arguments(int spp, uint64_t seed, const std::string& output) const;
 };
 
 struct Library {

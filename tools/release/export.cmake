@@ -1,6 +1,7 @@
 # Writes the student release or the grading kit (cmake -P; see CMakeLists.txt).
 #   -DMODE=student|kit -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
 #   kit only: -DMANIFEST=<graded_manifest.json> -DPT_GRADE=<pt-grade> -DPT_LINK_GUARD=<pt-link-guard>
+#             -DPT_LIBRARY_CHECK=<pt-library-check>
 # Every file is chosen by an allowlist: what is not named here is not shipped.
 cmake_minimum_required(VERSION 3.22)
 foreach(v MODE SOURCE_DIR BINARY_DIR OUT)
@@ -66,6 +67,10 @@ if(MODE STREQUAL "student")
   copy_tree(tests/autograder EXCLUDE "^tests/autograder/(kit|gradescope)/" "^tests/autograder/README\\.md$")
   # The benchmark, without the ladder of traversals from the reference to Embree.
   copy_tree(tests/bench EXCLUDE "/ladder\\.(h|cpp)$")
+  # The generator of the library's procedural scene (the library tests render
+  # it); not the reference images' renderer, which needs reference/.
+  copy_file(${S}/tools/CMakeLists.txt tools/CMakeLists.txt)
+  copy_file(${S}/tools/procedural_mesh.cpp tools/procedural_mesh.cpp)
   # The solution, compiled only.
   file(GLOB libs ${BINARY_DIR}/prebuilt/lib/*.a)
   foreach(lib IN LISTS libs)
@@ -74,7 +79,7 @@ if(MODE STREQUAL "student")
   endforeach()
   copy_file(${S}/tools/release/README.prebuilt.md prebuilt/README.md)
 elseif(MODE STREQUAL "kit")
-  foreach(v MANIFEST PT_GRADE PT_LINK_GUARD)
+  foreach(v MANIFEST PT_GRADE PT_LINK_GUARD PT_LIBRARY_CHECK)
     if(NOT DEFINED ${v})
       message(FATAL_ERROR "export.cmake: MODE kit needs -D${v}=...")
     endif()
@@ -93,6 +98,15 @@ elseif(MODE STREQUAL "kit")
   copy_file(${MANIFEST} manifest.json)
   copy_file(${PT_GRADE} bin/pt-grade)
   copy_file(${PT_LINK_GUARD} bin/pt-link-guard)
+  copy_file(${PT_LIBRARY_CHECK} bin/pt-library-check)
+  if(DEFINED OBJCOPY AND OBJCOPY)  # the grader's tools need no debug information either
+    foreach(tool pt-grade pt-link-guard pt-library-check)
+      execute_process(COMMAND ${OBJCOPY} --strip-debug ${OUT}/bin/${tool} RESULT_VARIABLE rc)
+      if(NOT rc EQUAL 0)
+        message(FATAL_ERROR "export.cmake: ${OBJCOPY} --strip-debug bin/${tool} failed")
+      endif()
+    endforeach()
+  endif()
   copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
   file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
   foreach(lib IN LISTS libs)

@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -92,11 +93,15 @@ int main(int argc, char** argv) {
   std::vector<std::pair<std::string, fs::path>> files;
   for (const auto& e : fs::recursive_directory_iterator(release)) {
     const std::string rel = fs::relative(e.path(), release).generic_string();
-    static const std::vector<std::string> banned = {"reference/", "tests/mutants", "tests/hostile", "/hidden/",
+    // A folder named reference/ anywhere holds the solution, except the
+    // scene library's stored reference images, which the release must carry.
+    static const std::vector<std::string> banned = {"/reference/", "tests/mutants", "tests/hostile", "/hidden/",
                                                     "/hidden", "tests/support/compiled", "ladder."};
+    const std::string anchored = "/" + rel + (e.is_directory() ? "/" : "");
+    const bool scene_images = rel.rfind("scenes/reference", 0) == 0 && !e.is_directory() &&
+                              std::regex_match(rel, std::regex(R"(scenes/reference/[A-Za-z0-9_]+\.(exr|png|json))"));
     for (const auto& b : banned)
-      if (("/" + rel + (e.is_directory() ? "/" : "")).find(b) != std::string::npos ||
-          rel.rfind(b, 0) == 0)
+      if (anchored.find(b) != std::string::npos && !(b == "/reference/" && (scene_images || anchored == "/scenes/reference/")))
         findings.push_back(rel + ": the release must leave this out");
     if (e.is_regular_file()) files.push_back({rel, e.path()});
   }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # pt-release-check must fail on a release that leaks (ctest: release:check-catches-leaks):
 # a telling line of the reference pasted into a shipped test, a hidden test's
-# name in a comment, and a hidden/ folder, each alone.
+# name in a comment, a hidden/ folder, a source file among the scene
+# library's reference images and a reference/ folder elsewhere, each alone.
 # Usage: test_release_check.sh RELEASE_DIR CHECKOUT RELEASE_CHECK MANIFEST WORKDIR
 set -euo pipefail
 release=$1 source=$2 check=$3 manifest=$4 work=$5
@@ -21,4 +22,7 @@ hidden=$(awk -F'"' '/"test":/{t=$4} /"visibility": *"hidden"/{print t; exit}' "$
 [ -n "$hidden" ] || { echo "no hidden test in $manifest"; exit 1; }
 leak hidden_name "echo '// see $hidden' >> tests/part1/test_camera.cpp"
 leak hidden_folder "mkdir -p tests/part1/hidden && touch tests/part1/hidden/x.cpp"
+# scenes/reference/ may hold the library's images, and nothing else.
+leak source_among_images "touch scenes/reference/part1_raygen_intersect.cpp"
+leak reference_folder "mkdir -p tools/reference && touch tools/reference/notes.txt"
 rm -rf "$work"
