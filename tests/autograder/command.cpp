@@ -1,10 +1,12 @@
 #include "command.h"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <signal.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -12,17 +14,33 @@
 
 namespace pt::grade {
 
-int run_command(const std::vector<std::string>& argv, std::string* output, double kill_after) {
+namespace {
+
+int exit_code(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status); }
+
+int run(const std::vector<std::string>& argv, std::string* output, double kill_after, const CommandOptions& options) {
   if (argv.empty()) return -1;
   int fds[2];
   if (::pipe(fds) != 0) return -1;
   std::fflush(nullptr);  // what this process buffered must not come out twice
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return -1;
   if (pid == 0) {
     ::dup2(output ? fds[1] : 2, 1);
     ::close(fds[0]);
     ::close(fds[1]);
+    if (options.parent_death_signal != 0) {
+      ::prctl(PR_SET_PDEATHSIG, options.parent_death_signal);
+      if (::getppid() != parent) ::_exit(128 + options.parent_death_signal);  // it died before the line above
+    }
+    if (options.in_child) {
+      const std::string error = options.in_child();
+      if (!error.empty()) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        ::_exit(126);
+      }
+    }
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -38,18 +56,29 @@ int run_command(const std::vector<std::string>& argv, std::string* output, doubl
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     ::close(fds[0]);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return exit_code(status);
   }
   char buf[65536];
   for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) != 0;) {
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) break;
-    if (output) output->append(buf, static_cast<size_t>(n));
+    if (output && output->size() < options.max_output)
+      output->append(buf, std::min(static_cast<size_t>(n), options.max_output - output->size()));
   }
   ::close(fds[0]);
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return exit_code(status);
+}
+
+}  // namespace
+
+int run_command(const std::vector<std::string>& argv, std::string* output, double kill_after) {
+  return run(argv, output, kill_after, CommandOptions{});
+}
+
+int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options) {
+  return run(argv, output, 0, options);
 }
 
 }  // namespace pt::grade

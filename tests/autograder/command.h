@@ -1,6 +1,9 @@
 #pragma once
-// Running a trusted helper program (nm, readelf, pt-grade) and keeping its
-// standard output. Not for code under test: that goes through sandbox.h.
+// Running a trusted helper program (nm, readelf, pt-grade, the compiler) and
+// keeping its standard output. Not for code under test: that goes through
+// sandbox.h.
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,5 +15,21 @@ namespace pt::grade {
 // killed with SIGKILL after that many seconds. Returns its exit status,
 // 128 + the signal when a signal ended it, or -1 when it could not start.
 int run_command(const std::vector<std::string>& argv, std::string* output, double kill_after = 0);
+
+struct CommandOptions {
+  // Bytes of output kept; the rest is read and dropped, so that a program
+  // that prints without end costs no memory.
+  size_t max_output = std::string::npos;
+  // The signal the program gets when this process dies (0: none), so that a
+  // grader killed from outside leaves nothing running.
+  int parent_death_signal = 0;
+  // Runs in the child between fork and exec (confinement); a non-empty
+  // return is what failed, and the child exits with status 126.
+  std::function<std::string()> in_child;
+};
+
+// The same with a bound on the output kept, a parent-death signal and a step
+// before exec.
+int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options);
 
 }  // namespace pt::grade

@@ -3,16 +3,16 @@
 // (issue 8 section 2; tests/autograder/README.md has the threat model):
 //
 //  * Rejections: an #include of anything but the C++ standard library, GLM
-//    and the framework's headers; #include_next and #import; an #include whose
-//    header name is computed by a macro or cannot be read plainly; the
-//    assembler's .incbin or .include in a string (asm statements read files
-//    at compile time with them). A rejected
+//    and the framework's headers; #include_next, #import and #embed; an
+//    #include whose header name is computed by a macro or cannot be read
+//    plainly; the assembler's .incbin or .include in a string (asm
+//    statements read files at compile time with them). A rejected
 //    file is not compiled: its part scores 0, with the reasons.
 //  * Flags, for an instructor to read (they never change a score): process
 //    control (fork, exec*, kill, ptrace, syscall, exit), asm, dlsym, "/proc",
-//    the environment, file output, signal handlers, constructor attributes,
-//    names of the test support (pt::grading, pt::test, ::testing), a
-//    definition of main.
+//    the environment, file output, signal handlers, constructor, section and
+//    ifunc attributes, names of the test support (pt::grading, pt::test,
+//    ::testing), a definition of main.
 //
 // The scanner follows the preprocessor's first phases (line splices,
 // comments, string and raw string literals, the %: digraph), so that a

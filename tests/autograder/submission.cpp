@@ -14,6 +14,7 @@
 
 #include "command.h"
 #include "html_report.h"
+#include "kit_build.h"
 #include "manifest.h"
 #include "redact.h"
 #include "report.h"
@@ -51,24 +52,6 @@ std::string seconds_text(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g s", s);
   return buf;
-}
-
-std::string shell_quoted(const std::string& word) {
-  std::string q = "'";
-  for (char c : word) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs a trusted build command (cmake, ninja: the compiler on untrusted
-// source) with a wall-clock limit for its whole process group (coreutils
-// `timeout`) and a 4 GiB address-space limit (util-linux `prlimit`); standard
-// error joins standard output. Exit status 124 or 137: the time ran out.
-int run_build_command(const std::vector<std::string>& argv, double seconds, std::string* output) {
-  char secs[32];
-  std::snprintf(secs, sizeof secs, "%.1f", seconds);
-  std::string cmd = "exec timeout --kill-after=5 " + std::string(secs) + " prlimit --as=" + std::to_string(4ull << 30) + " --";
-  for (const auto& a : argv) cmd += " " + shell_quoted(a);
-  return run_command({"/bin/sh", "-c", cmd + " 2>&1"}, output);
 }
 
 // What a failed build printed that a student needs: the compiler's errors
@@ -242,12 +225,18 @@ int grade_submission(const SubmissionOptions& opt) {
   }
 
   std::map<int, std::string> binaries;
+  const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
+                                                         "landlock") == opt.sandbox.without.end();
+  const KitBuild kit_build(tree.string(), landlock);
+  if (!buildable.empty() && !kit_build.unconfined_reason().empty())
+    report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
+                           "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
   std::string renders_dir;  // made with the renders, removed with the tree
   if (!buildable.empty()) {
     std::string out;
-    const int rc = run_build_command({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
-                                      "-DPT_PARTS_SUBMITTED=" + parts_list},
-                                     120, &out);
+    const int rc = kit_build.run({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
+                                  "-DPT_PARTS_SUBMITTED=" + parts_list},
+                                 120, &out);
     if (rc != 0) {
       std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", out.c_str());
       for (const TaskFile* f : buildable) set_part(f->part, "not built: the grading kit could not be configured (an instructor must look)");
@@ -264,8 +253,8 @@ int grade_submission(const SubmissionOptions& opt) {
     const std::string target = "part" + std::to_string(f->part) + "_tests";
     std::string out;
     const auto build_start = Clock::now();
-    const int rc = run_build_command({"cmake", "--build", (tree / "build").string(), "--target", target},
-                                     std::min(opt.build_seconds, left), &out);
+    const int rc = kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", target},
+                                 std::min(opt.build_seconds, left), &out);
     const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
     if (rc != 0) {
       const bool timed_out = rc == 124 || rc == 137;
@@ -326,7 +315,11 @@ int grade_submission(const SubmissionOptions& opt) {
       } else {
         page.renders_note = "Rendering the scene library...";
         save();
-        render_library(job, run_build_command, sandbox, page, &report.notes);
+        // The renderer is built from the same hostile task files: confined the same way.
+        auto build = [&](const std::vector<std::string>& argv, double seconds, std::string* output) {
+          return kit_build.run(argv, seconds, output);
+        };
+        render_library(job, build, sandbox, page, &report.notes);
       }
     } else {
       page.renders_note = "No renders: turned off (--no-renders).";

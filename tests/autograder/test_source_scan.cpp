@@ -46,6 +46,8 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
       {"#define F \"../reference/x.cpp\"\n#include F\n", 2},  // computed
       {"#include_next <cmath>\n", 1},
       {"#import \"core/vec.h\"\n", 1},
+      // C23's #embed (GCC 15, Clang 19) reads any file into an initializer.
+      {"const char s[] = {\n#embed \"../reference/x.cpp\"\n};\n", 2},
       {"#include <glm/../../reference/x.cpp>\n", 1},
       // A splice joins the two lines for the preprocessor, and so for the scanner.
       {"#inc\\\nlude \"../reference/x.cpp\"\n", 1},
@@ -54,6 +56,10 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
       {"%:include \"../reference/x.cpp\"\n", 1},
       {"int x;\nasm(\".incbin \\\"/work/main/reference/part1.cpp\\\"\");\n", 2},
       {"asm(\".include \\\"x.s\\\"\");\n", 1},
+      // The assembler reads its directives in any case, and the compiler
+      // joins adjacent literals before the assembler sees them.
+      {"asm(\".INCBIN \\\"/etc/passwd\\\"\");\n", 1},
+      {"asm(\".inc\"\n    \"bin \\\"/etc/passwd\\\"\");\n", 1},
   };
   for (const auto& c : cases) {
     SourceScan s = scan_task_source(c.src, kFramework);
@@ -94,13 +100,16 @@ TEST(SourceScan, FlagsWhatAnInstructorShouldRead) {
       "namespace pt { namespace test { int seed; } }\n"              // 13
       "int main(int, char**) { return 0; }\n"                        // 14
       "void o() { std::exit(0); }\n"                                 // 15
-      "void p() { ptrace(0, 0, 0, 0); }\n";                          // 16
+      "void p() { ptrace(0, 0, 0, 0); }\n"                           // 16
+      "__attribute__((section(\".preinit_array\"))) void (*q)() = 0;\n" // 17
+      "void r() __attribute__((ifunc(\"s\")));\n";                     // 18
   SourceScan s = scan_task_source(src, kFramework);
   EXPECT_TRUE(s.rejections.empty()) << lines(s.rejections);
   const std::vector<std::pair<int, std::string>> want = {
       {2, "fork"},     {3, "execv"},        {4, "kill"},    {5, "syscall"}, {6, "asm"},
       {7, "dlsym"},    {8, "/proc"},        {9, "getenv"},  {10, "ofstream"}, {11, "constructor"},
-      {12, "grading"}, {13, "test"},        {14, "main"},   {15, "exit"},    {16, "ptrace"}};
+      {12, "grading"}, {13, "test"},        {14, "main"},   {15, "exit"},    {16, "ptrace"},
+      {17, "section"}, {18, "ifunc"}};
   for (const auto& [line, word] : want) EXPECT_TRUE(mentions(s.flags, word, line)) << word << "\n" << lines(s.flags);
 }
 

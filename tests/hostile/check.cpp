@@ -2,27 +2,38 @@
 // `--` and checks that the results.json it wrote is honest (README.md).
 //
 //   pt-hostile-check --case DIR --manifest FILE --results FILE --source-dir DIR
-//                    --pt-grade PT_GRADE [--fallback] -- GRADING COMMAND...
+//                    --pt-grade PT_GRADE [--fallback] [--submission [--zip FILE]]
+//                    -- GRADING COMMAND...
 //
 // --fallback: the command leaves sandbox layers out (expect.json's
 // "fallback"), and the case needs the layers that "fallback" lists instead.
+// --submission: the command is `pt-grade submission` on the case's generated
+// task files (--tasks, or the zip --zip that this program first writes from
+// expect.json's "zip"); expect.json's "submission" object overrides its other
+// keys, and every part of the manifest is checked, not only the case's.
 //
-// Honest means: the grader survived; every graded test of the part is listed
-// with the manifest's points (the maximum never shrinks); the tests of the
-// case's lost_tasks scored 0 with a message matching its failure pattern and
-// every other test scored full marks; the total is their sum; the file does
-// not change after the grader has finished; and no line of a reference file
-// appears in it. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer the
-// case needs is missing here), 2 could not check.
+// Honest means: the grader survived; every graded test is listed with the
+// manifest's points (the maximum never shrinks); the tests of the case's
+// lost_tasks scored 0 with a message matching its failure pattern (and the
+// layer that stopped it, "stopped_at") and every other test of a submitted
+// part scored full marks; the total is their sum; the file does not change
+// after the grader has finished; no line of the solution or of a hidden test
+// that the submission does not itself hold appears in it; and no process of
+// the run is left. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer
+// the case needs is missing here), 2 could not check.
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
-#include <csignal>
-#include <filesystem>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -30,20 +41,28 @@
 #include <thread>
 #include <vector>
 
+#include <archive.h>
+#include <archive_entry.h>
 #include <nlohmann/json.hpp>
 
 #include "command.h"
 
 namespace {
 
+namespace fs = std::filesystem;
 using nlohmann::json;
 using pt::grade::run_command;
 
-std::string read_file(const std::string& path) {
+std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string trimmed(const std::string& line) {
+  const auto b = line.find_first_not_of(" \t"), e = line.find_last_not_of(" \t\r");
+  return b == std::string::npos ? "" : line.substr(b, e - b + 1);
 }
 
 // Lines of a solution file worth looking for: long enough to be code, not a
@@ -52,30 +71,104 @@ std::vector<std::string> telling_lines(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
-    const auto b = line.find_first_not_of(" \t"), e = line.find_last_not_of(" \t\r");
-    if (b == std::string::npos) continue;
-    line = line.substr(b, e - b + 1);
+    line = trimmed(line);
     if (line.size() >= 24 && line.rfind("#include", 0) != 0) lines.push_back(line);
   }
   return lines;
 }
 
-// The binary a `--binary N=FILE` argument names.
-std::string binary_graded(const std::vector<std::string>& command) {
+// The value after `flag` in a command, "" when absent.
+std::string argument_of(const std::vector<std::string>& command, const std::string& flag) {
   for (size_t i = 0; i + 1 < command.size(); ++i)
-    if (command[i] == "--binary") return command[i + 1].substr(command[i + 1].find('=') + 1);
+    if (command[i] == flag) return command[i + 1];
   return "";
 }
 
-// Processes running `binary` now.
-int survivors(const std::string& binary) {
-  int n = 0;
+// The processes descended from this one that are still alive (zombies are
+// dead: only their exit status waits to be read), each named on standard
+// output when `say`. This program is a child subreaper (main), so whatever the grader
+// started, at any depth, is still its descendant after the grader has gone,
+// daemons included; another test's processes never are, even when it grades
+// the same binary at the same time.
+std::vector<pid_t> live_descendants(bool say) {
+  std::map<pid_t, std::vector<pid_t>> children;
+  std::map<pid_t, std::string> cmdlines;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc", ec)) {
-    const std::string cmdline = read_file(entry.path().string() + "/cmdline");
-    n += !cmdline.empty() && cmdline.c_str() == binary;
+  for (const auto& entry : fs::directory_iterator("/proc", ec)) {
+    const std::string name = entry.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    // /proc/PID/stat: "pid (comm) state ppid ...", comm may hold spaces and parentheses.
+    const std::string stat = read_file(entry.path() / "stat");
+    const size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 1));
+    char state = 0;
+    pid_t ppid = 0;
+    if (!(rest >> state >> ppid) || state == 'Z' || state == 'X') continue;
+    const pid_t pid = std::stoi(name);
+    children[ppid].push_back(pid);
+    std::string cmdline = read_file(entry.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    cmdlines[pid] = cmdline.substr(0, 200);
   }
-  return n;
+  std::vector<pid_t> found, todo{::getpid()};
+  while (!todo.empty()) {
+    const pid_t pid = todo.back();
+    todo.pop_back();
+    for (pid_t child : children[pid]) {
+      found.push_back(child);
+      todo.push_back(child);
+    }
+  }
+  if (say)
+    for (pid_t pid : found) std::printf("left running: %d %s\n", pid, cmdlines[pid].c_str());
+  return found;
+}
+
+// Ends what a failed case left behind (a stopped tree cannot refill itself),
+// so that a failing test does not leave a fork bomb on the machine.
+void end_descendants(const std::vector<pid_t>& pids) {
+  for (pid_t pid : pids) ::kill(pid, SIGSTOP);
+  for (pid_t pid : pids) ::kill(pid, SIGKILL);
+  while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+  }
+}
+
+// The zip a "zip" case submits: each entry is {"name", and one of "from" (a
+// file of the generated submission), "text", "symlink" (the link's target,
+// where @PT_CHECKOUT@ is the instructor's checkout)}.
+std::string write_zip(const fs::path& zip, const json& entries, const fs::path& tasks, const std::string& checkout) {
+  std::unique_ptr<archive, int (*)(archive*)> a(archive_write_new(), archive_write_free);
+  archive_write_set_format_zip(a.get());
+  if (archive_write_open_filename(a.get(), zip.c_str()) != ARCHIVE_OK) return archive_error_string(a.get());
+  for (const auto& e : entries) {
+    std::unique_ptr<archive_entry, void (*)(archive_entry*)> entry(archive_entry_new(), archive_entry_free);
+    archive_entry_set_pathname(entry.get(), e.at("name").get<std::string>().c_str());
+    std::string data;
+    if (e.contains("symlink")) {
+      archive_entry_set_filetype(entry.get(), AE_IFLNK);
+      archive_entry_set_perm(entry.get(), 0777);
+      std::string target = e["symlink"];
+      if (const auto at = target.find("@PT_CHECKOUT@"); at != std::string::npos) target.replace(at, 13, checkout);
+      archive_entry_set_symlink(entry.get(), target.c_str());
+    } else {
+      data = e.contains("from") ? read_file(tasks / e["from"].get<std::string>()) : e.value("text", "");
+      archive_entry_set_filetype(entry.get(), AE_IFREG);
+      archive_entry_set_perm(entry.get(), 0644);
+      archive_entry_set_size(entry.get(), static_cast<la_int64_t>(data.size()));
+    }
+    if (archive_write_header(a.get(), entry.get()) != ARCHIVE_OK) return archive_error_string(a.get());
+    if (!data.empty() && archive_write_data(a.get(), data.data(), data.size()) < 0) return archive_error_string(a.get());
+  }
+  return archive_write_close(a.get()) == ARCHIVE_OK ? "" : archive_error_string(a.get());
+}
+
+// The words a lost test's message must hold when a layer before the run
+// stopped its part (the messages of tests/autograder/submission.cpp).
+std::string layer_pattern(const std::string& stopped_at) {
+  if (stopped_at == "intake") return "rejected before building";
+  if (stopped_at == "build") return "does not build|did not build within|the compiler read files outside";
+  return "";
 }
 
 struct Checker {
@@ -88,9 +181,9 @@ struct Checker {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string case_dir, manifest_path, results_path, source_dir, pt_grade;
+  std::string case_dir, manifest_path, results_path, source_dir, pt_grade, zip_path, tasks_dir;
   std::vector<std::string> command;
-  bool fallback = false;
+  bool fallback = false, submission = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](std::string& out) {
@@ -102,6 +195,9 @@ int main(int argc, char** argv) {
     else if (a == "--source-dir") value(source_dir);
     else if (a == "--pt-grade") value(pt_grade);
     else if (a == "--fallback") fallback = true;
+    else if (a == "--submission") submission = true;
+    else if (a == "--zip") value(zip_path);
+    else if (a == "--tasks") value(tasks_dir);
     else if (a == "--") {
       command.assign(argv + i + 1, argv + argc);
       break;
@@ -109,7 +205,7 @@ int main(int argc, char** argv) {
   }
   if (case_dir.empty() || manifest_path.empty() || results_path.empty() || command.empty()) {
     std::fprintf(stderr, "usage: pt-hostile-check --case DIR --manifest FILE --results FILE --source-dir DIR "
-                         "--pt-grade PT_GRADE -- COMMAND...\n");
+                         "--pt-grade PT_GRADE [--fallback] [--submission [--tasks DIR] [--zip FILE]] -- COMMAND...\n");
     return 2;
   }
   json expect, manifest;
@@ -120,8 +216,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pt-hostile-check: %s\n", e.what());
     return 2;
   }
+  // Under `pt-grade submission` the case's "submission" keys replace the others.
+  if (submission && expect.contains("submission"))
+    for (const auto& [key, value] : expect["submission"].items()) expect[key] = value;
   const int part = expect.at("part").get<int>();
-  std::printf("case %s: %s\n", case_dir.c_str(), expect.value("attack", "").c_str());
+  std::printf("case %s%s: %s\n", case_dir.c_str(), submission ? " (pt-grade submission)" : "",
+              expect.value("attack", "").c_str());
 
   // A case that needs a layer this machine does not offer is skipped before
   // it runs: a fork bomb is not something to try without a process limit.
@@ -149,11 +249,32 @@ int main(int argc, char** argv) {
     }
   }
 
+  // The parts the submission holds: the case's, and its "others".
+  std::set<int> submitted{part};
+  const json others = expect.value("others", json::object());
+  for (const auto& [n, other] : others.items()) submitted.insert(std::stoi(n));
+  std::error_code made;
+  fs::create_directories(fs::path(results_path).parent_path(), made);
+  if (!zip_path.empty()) {
+    const std::string error = write_zip(zip_path, expect.at("zip"), tasks_dir, source_dir);
+    if (!error.empty()) {
+      std::fprintf(stderr, "pt-hostile-check: cannot write %s: %s\n", zip_path.c_str(), error.c_str());
+      return 2;
+    }
+  }
+  const std::string work = argument_of(command, "--work");
+  if (!work.empty()) {  // what a killed grader left last time
+    std::error_code ec;
+    fs::remove_all(work, ec);
+  }
+
+  // Orphans of the grader's runs are handed to this program, not to init: the
+  // process check below finds them whatever they have become.
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   ::unlink(results_path.c_str());
   const double kill_after = expect.value("kill_grader_after", 0.0);
   const int status = run_command(command, nullptr, kill_after);
   const std::string written = read_file(results_path);
-  const std::string binary = binary_graded(command);
   std::this_thread::sleep_for(std::chrono::duration<double>(expect.value("settle_seconds", 0.0)));
   const std::string settled = read_file(results_path);
 
@@ -162,10 +283,23 @@ int main(int argc, char** argv) {
   c.expect(status == want_status,
            "the grader exited with status " + std::to_string(status) + ", not " + std::to_string(want_status));
   // A grader that returns has killed every process of its runs; one that is
-  // killed takes them with it within moments (the warden's death signal).
-  if (kill_after > 0) std::this_thread::sleep_for(std::chrono::seconds(1));
-  const int left = binary.empty() ? 0 : survivors(binary);
-  c.expect(left == 0, std::to_string(left) + " process(es) of the graded binary outlived the grader");
+  // killed takes them with it within moments (the warden's and the build's
+  // death signals): up to 10 s on a loaded machine, where a process killed
+  // may wait to be scheduled before it dies. A daemon that escaped stays.
+  std::vector<pid_t> left_pids;
+  if (kill_after > 0) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!live_descendants(false).empty() && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  left_pids = live_descendants(true);
+  end_descendants(left_pids);
+  const size_t left = left_pids.size();
+  c.expect(left == 0, std::to_string(left) + " process(es) of the run outlived the grader");
+  if (!work.empty() && kill_after == 0) {
+    std::error_code ec;
+    c.expect(fs::is_empty(work, ec) || !fs::exists(work), "the grader left files in " + work);
+  }
   c.expect(!written.empty(), "no results.json at " + results_path);
   c.expect(settled == written, "results.json changed after the grader had finished");
   json results;
@@ -174,48 +308,82 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     c.expect(false, std::string("results.json does not parse: ") + e.what());
   }
+  if (!results.is_object()) results = json::object();  // checked below as a report that lists nothing
   const json& pt = results.is_object() ? results["extra_data"]["pt_grade"] : json();
   c.expect(pt.is_object() && pt.value("complete", false) == (kill_after == 0),
            kill_after > 0 ? "results.json says it is complete, yet the grader was killed"
                           : "results.json does not say the grading completed");
 
+  // Every test of the parts checked: the case's part, or under `submission` all.
   std::map<std::string, json> listed;
   for (const auto& t : results.value("tests", json::array()))
-    if (t.contains("extra_data") && t["extra_data"].value("part", 0) == part)
-      listed[t["extra_data"].value("test", "")] = t;
+    if (t.contains("extra_data") && t["extra_data"].contains("part"))
+      listed[std::to_string(t["extra_data"].value("part", 0)) + "/" + t["extra_data"].value("test", "")] = t;
+  const std::string stopped_at = expect.value("stopped_at", "run");
   std::set<std::string> lost;
   for (const auto& task : expect.value("lost_tasks", json::array())) lost.insert(task.get<std::string>());
-  const std::regex failure(expect.value("failure", ".*"));
+  if (stopped_at != "run" && !expect.contains("lost_tasks"))  // the whole part, by default
+    for (const auto& m : manifest["parts"][std::to_string(part)]) lost.insert(m.at("task").get<std::string>());
+  // Messages are several lines: [\s\S] matches any character in them.
+  const std::regex failure(expect.value("failure", "[\\s\\S]*"));
+  const std::regex layer(layer_pattern(stopped_at));
+  const std::regex not_submitted("not submitted|submission rejected before building");
   double want_score = 0, got_score = 0, max_score = 0;
-  size_t not_run = 0;
-  const json& tests = manifest["parts"][std::to_string(part)];
-  for (const auto& m : tests) {
-    const std::string name = m.at("test");
-    const double points = m.at("points");
-    max_score += points;
-    auto it = listed.find(name);
-    if (it == listed.end()) {
-      c.expect(false, name + " is missing from results.json");
-      continue;
+  size_t not_run = 0, checked = 0;
+  for (const auto& [n, tests] : manifest["parts"].items()) {
+    const int p = std::stoi(n);
+    if (!submission && p != part) continue;
+    double part_max = 0;
+    for (const auto& m : tests) {
+      const std::string name = m.at("test"), task = m.at("task");
+      const double points = m.at("points");
+      part_max += points;
+      ++checked;
+      auto it = listed.find(n + "/" + name);
+      if (it == listed.end()) {
+        c.expect(false, name + " (part " + n + ") is missing from results.json");
+        continue;
+      }
+      const json& t = it->second;
+      const double score = t.value("score", -1.0), max = t.value("max_score", -1.0);
+      const std::string output = t.value("output", "");
+      got_score += score;
+      not_run += t["extra_data"].value("result", "") == "not-run";
+      c.expect(max == points, name + ": max_score " + std::to_string(max) + ", the manifest says " + std::to_string(points));
+      if (!submitted.count(p)) {
+        c.expect(score == 0 && std::regex_search(output, not_submitted),
+                 name + " (part " + n + ", not submitted) scored " + std::to_string(score) + ": " + output.substr(0, 200));
+      } else if (lost.count(task)) {
+        c.expect(score == 0, name + " (" + task + ") scored " + std::to_string(score));
+        c.expect(std::regex_search(output, failure),
+                 name + ": its message does not match /" + expect.value("failure", "") + "/: " + output.substr(0, 300));
+        if (p == part && stopped_at != "run")
+          c.expect(std::regex_search(output, layer), name + ": its message does not say the " + stopped_at +
+                                                         " stopped it: " + output.substr(0, 300));
+      } else {
+        want_score += points;
+        c.expect(score == points, name + " (" + task + ") scored " + std::to_string(score) + " of " +
+                                      std::to_string(points) + ": " + output.substr(0, 300));
+      }
     }
-    const json& t = it->second;
-    const double score = t.value("score", -1.0), max = t.value("max_score", -1.0);
-    const std::string output = t.value("output", "");
-    got_score += score;
-    not_run += t["extra_data"].value("result", "") == "not-run";
-    c.expect(max == points, name + ": max_score " + std::to_string(max) + ", the manifest says " + std::to_string(points));
-    if (lost.count(m.at("task"))) {
-      c.expect(score == 0, name + " (" + m.at("task").get<std::string>() + ") scored " + std::to_string(score));
-      c.expect(std::regex_search(output, failure),
-               name + ": its message does not match /" + expect.value("failure", "") + "/: " + output.substr(0, 300));
+    max_score += part_max;
+    if (pt.is_object() && pt.contains("parts") && pt["parts"].contains(n)) {
+      const json& summary = pt["parts"][n];
+      c.expect(std::abs(summary.value("possible", -1.0) - part_max) < 1e-9,
+               "part " + n + " is worth " + std::to_string(summary.value("possible", -1.0)) + ", the manifest says " +
+                   std::to_string(part_max));
+      // The layer that stopped the case's part: a part stopped before the run was never graded.
+      if (submission && p == part && kill_after == 0)
+        c.expect(summary.value("graded", false) == (stopped_at == "run"),
+                 "part " + n + (stopped_at == "run" ? " was not graded" : " was graded, yet the " + stopped_at + " should have stopped it"));
     } else {
-      want_score += points;
-      c.expect(score == points, name + " (" + m.at("task").get<std::string>() + ") scored " + std::to_string(score) +
-                                    " of " + std::to_string(points) + ": " + output.substr(0, 300));
+      c.expect(false, "results.json has no summary of part " + n);
     }
   }
-  c.expect(listed.size() == tests.size(), "results.json lists " + std::to_string(listed.size()) + " tests of part " +
-                                              std::to_string(part) + ", the manifest " + std::to_string(tests.size()));
+  size_t listed_checked = 0;
+  for (const auto& [key, t] : listed) listed_checked += submission || key.rfind(std::to_string(part) + "/", 0) == 0;
+  c.expect(listed_checked == checked, "results.json lists " + std::to_string(listed_checked) + " graded tests, the manifest " +
+                                          std::to_string(checked));
   const double total = results.value("score", -1.0);
   c.expect(std::abs(total - want_score) < 1e-9,
            "total score " + std::to_string(total) + ", expected " + std::to_string(want_score));
@@ -225,21 +393,45 @@ int main(int argc, char** argv) {
   if (expect.contains("note"))
     c.expect(std::regex_search(results.value("output", ""), std::regex(expect["note"].get<std::string>())),
              "no note matching /" + expect["note"].get<std::string>() + "/ in the report's output");
+  if (expect.contains("flag")) {  // the source flags pt-grade submission shows the instructor
+    std::string flags;
+    for (const auto& t : results.value("tests", json::array()))
+      if (t.value("name", "") == "Instructor: source flags") flags = t.value("output", "");
+    c.expect(std::regex_search(flags, std::regex(expect["flag"].get<std::string>())),
+             "no source flag matching /" + expect["flag"].get<std::string>() + "/ for the instructor: " + flags.substr(0, 300));
+  }
   if (expect.contains("max_results_bytes"))
     c.expect(settled.size() <= expect["max_results_bytes"].get<size_t>(),
              "results.json is " + std::to_string(settled.size()) + " bytes");
-  for (const auto& file : expect.value("no_text_of", json::array()))
-    for (const auto& line : telling_lines(read_file(source_dir + "/" + file.get<std::string>())))
-      if (settled.find(json(line).dump().substr(1, json(line).dump().size() - 2)) != std::string::npos) {
-        c.expect(false, "results.json holds a line of " + file.get<std::string>() + ": " + line);
+
+  // No line of the solution or of a hidden test, unless the submission itself
+  // holds it (a student may see their own code in a compiler's message).
+  std::set<std::string> own;
+  std::vector<fs::path> secrets;
+  std::error_code ec;
+  if (!tasks_dir.empty())
+    for (const auto& e : fs::directory_iterator(tasks_dir, ec))
+      for (const auto& line : telling_lines(read_file(e.path()))) own.insert(line);
+  for (const auto& file : expect.value("no_text_of", json::array())) secrets.push_back(fs::path(source_dir) / file.get<std::string>());
+  for (const char* folder : {"reference", "tests/part1/hidden", "tests/part2/hidden", "tests/part3/hidden",
+                             "tests/part4/hidden", "tests/part5/hidden"})
+    for (const auto& e : fs::directory_iterator(fs::path(source_dir) / folder, ec)) secrets.push_back(e.path());
+  for (const auto& file : secrets)
+    for (const auto& line : telling_lines(read_file(file))) {
+      const std::string quoted = json(line).dump();
+      if (!own.count(line) && settled.find(quoted.substr(1, quoted.size() - 2)) != std::string::npos) {
+        c.expect(false, "results.json holds a line of " + fs::relative(file, source_dir).string() + ": " + line);
         break;
       }
+    }
 
   std::printf("score %g of %g (expected %g)\n", total, max_score, want_score);
   if (c.failures.empty()) {
     std::printf("honest\n");
     return 0;
   }
-  for (const auto& f : c.failures) std::printf("NOT HONEST: %s\n", f.c_str());
+  // The first few say what is wrong; a whole part wrong the same way would repeat it for every test.
+  for (size_t i = 0; i < c.failures.size() && i < 8; ++i) std::printf("NOT HONEST: %s\n", c.failures[i].c_str());
+  if (c.failures.size() > 8) std::printf("NOT HONEST: ... and %zu more\n", c.failures.size() - 8);
   return 1;
 }

@@ -131,7 +131,7 @@ elseif(MODE STREQUAL "gradescope")
   foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
     copy_file(${S}/${f} ${prefix}${f})
   endforeach()
-  foreach(d skeleton tasks reference tests scenes handouts tools)
+  foreach(d skeleton tasks reference tests scenes handouts tools)  # tools/: the root CMakeLists adds it
     copy_tree(${d} EXCLUDE ${scene_excludes})
   endforeach()
 else()

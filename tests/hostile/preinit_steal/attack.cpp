@@ -2,9 +2,10 @@
 // every static initializer; if it ran before the test main's own, it could
 // read the grading channel's key from the inherited descriptor and forge
 // verdicts with it. It tries every descriptor from 3 to 63.
-#include <unistd.h>
-
 #include <cstdio>
+
+// No system header (the grading kit accepts none): the POSIX call declared here.
+extern "C" long read(int fd, void* data, unsigned long size);
 
 namespace {
 void steal(int, char**, char**) {

@@ -1,13 +1,20 @@
 // Hostile: read the solution. PT_SOURCE_DIR (a compile definition every task
 // file sees) gives the grader's source tree; every task throws the text of the
 // reference file of this part, so it appears in the failure message of each
-// visible test, which the student is shown.
+// visible test, which the student is shown. The grading kit defines no
+// PT_SOURCE_DIR: there the attack guesses the instructor's checkout, as a
+// student who has seen the course's layout (or Gradescope's /autograder/source)
+// would; the gallery writes the real path in for the placeholder below.
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "core/not_implemented.h"
+
+#ifndef PT_SOURCE_DIR
+#define PT_SOURCE_DIR "@PT_CHECKOUT@"
+#endif
 
 namespace {
 std::runtime_error solution_text() {

@@ -1,0 +1,49 @@
+#pragma once
+// Running the grading kit's build on a submission's task files (submission.h,
+// step 4). The compiler, the assembler and the linker are trusted programs
+// working on hostile input, as the grader's own user (root on Gradescope):
+// `asm(".incbin \"FILE\"")` makes the assembler copy any file it can read into
+// the program, and no scan of the source finds every spelling of it (the
+// preprocessor can paste the directive together). So each build step runs
+//
+//  - confined by Landlock where the kernel offers it: it reads only the
+//    system (/usr and the library folders, /etc/ld.so.cache) and the build
+//    tree, writes only the tree, executes only the system's programs and the
+//    kit's bin/ (tests/hostile/incbin_pasted);
+//  - under a wall-clock limit for its whole process group (coreutils
+//    `timeout`) and a 4 GiB address-space limit per process (util-linux
+//    `prlimit`) (tests/hostile/compile_time_bomb);
+//  - sent SIGTERM when the grader dies, which `timeout` passes on to the
+//    compiler: a grader killed from outside leaves no build running
+//    (tests/hostile/grader_killed_building);
+//  - with at most 1 MiB of its output kept (and the kit's compiler stops
+//    after 20 errors), so that an error flood costs the grader no memory
+//    (tests/hostile/error_flood).
+#include <string>
+#include <vector>
+
+namespace pt::grade {
+
+class KitBuild {
+ public:
+  // `tree`: the submission's copy of the kit. `confine`: Landlock where the
+  // kernel offers it (false: --no-sandbox, --sandbox-without landlock).
+  KitBuild(std::string tree, bool confine);
+  ~KitBuild();
+  KitBuild(const KitBuild&) = delete;
+  KitBuild& operator=(const KitBuild&) = delete;
+
+  // "" when Landlock confines every build step; else why it does not.
+  const std::string& unconfined_reason() const { return unconfined_; }
+
+  // Runs one build step (cmake); standard error joins standard output, of
+  // which the first 1 MiB is kept. Exit status 124 or 137: the time ran out.
+  int run(const std::vector<std::string>& argv, double seconds, std::string* output) const;
+
+ private:
+  std::string tree_;
+  int ruleset_ = -1;
+  std::string unconfined_;
+};
+
+}  // namespace pt::grade
