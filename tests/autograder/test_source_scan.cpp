@@ -64,7 +64,9 @@ TEST(SourceScan, IncludesOfAnythingElseAreRejectedWithTheirLine) {
   for (const auto& c : cases) {
     SourceScan s = scan_task_source(c.src, kFramework);
     EXPECT_FALSE(s.rejections.empty()) << "accepted:\n" << c.src;
-    if (!s.rejections.empty()) EXPECT_EQ(s.rejections[0].line, c.line) << c.src << lines(s.rejections);
+    if (!s.rejections.empty()) {
+      EXPECT_EQ(s.rejections[0].line, c.line) << c.src << lines(s.rejections);
+    }
   }
 }
 
