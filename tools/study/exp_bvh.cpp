@@ -177,13 +177,13 @@ set key top left
 set grid
 cow = 5808
 set arrow 1 from cow, graph 0 to cow, graph 1 nohead dashtype 3 lc rgb "gray40"
-set label 1 "course cow (5,808)" at cow, graph 0.04 left offset 0.5,0 textcolor rgb "gray40"
+set label 1 "course cow (5,808)" at cow, graph 0.04 left offset 0.5,0 textcolor rgb "gray40" front
 is(m) = strcol(1) eq m
 set title "time per ray"
 set ylabel "seconds per ray"
 set key at graph 0.02, graph 0.98 left top
 plot "bvh.csv" using (is("bvh") ? $12 : NaN):13:14 with yerrorlines lc rgb "#1f77b4" pt 7 title "BVH", \
-     "" using (is("brute_force") ? $12 : NaN):13:14 with yerrorlines lc rgb "#d62728" pt 5 title "brute force", \
+     "" using (is("brute_force") ? $12 : NaN):13:($14 == $14 ? $14 : 0) with yerrorlines lc rgb "#d62728" pt 5 title "brute force", \
      "" using (is("brute_force_extrapolated") ? $12 : NaN):13 with linespoints dashtype 2 lc rgb "#d62728" pt 4 title "brute force, extrapolated"
 set title "primitive tests per ray"
 set ylabel "tests per ray"
@@ -194,7 +194,7 @@ plot "bvh.csv" using (is("bvh") ? $12 : NaN):15 with linespoints lc rgb "#1f77b4
 set title "BVH build time"
 set ylabel "seconds"
 set key default
-set key bottom right
+set key top left
 plot "bvh.csv" using (is("bvh") ? $12 : NaN):17:18 with yerrorlines lc rgb "#1f77b4" pt 7 title "BVH build (one thread)"
 unset multiplot
 )GP";

@@ -49,7 +49,7 @@ Experiment run_roulette(const Options& opt) {
     t.set("max_depth", r.max_ray_depth)
         .set("rr", r.rr_continue_prob)
         .set("relmse_times_seconds", m.relmse * m.seconds)
-        .set("relmse_times_seconds_se", m.relmse_se * m.seconds)
+        .set("relmse_times_seconds_se", m.relmse * m.seconds * std::hypot(m.relmse_se / m.relmse, m.seconds_se / m.seconds))
         .set("energy_bias", m.energy_bias)
         .set("energy_bias_se", m.energy_bias_se);
     std::fprintf(stderr, "  %s %s: %.3g s, relMSE %.4g +- %.2g, energy %+.4f +- %.4f\n", method.c_str(), param.c_str(),
@@ -64,9 +64,11 @@ Experiment run_roulette(const Options& opt) {
     r.rr_continue_prob = k / 10.0;
     Measurement m = row("roulette", fmt("p=%.1f", r.rr_continue_prob), r.rr_continue_prob, r);
     const double eff = m.relmse * m.seconds;
+    // Its standard error: relMSE's and the time's, relative, in quadrature.
+    const double eff_se = eff * std::hypot(m.relmse_se / m.relmse, m.seconds_se / m.seconds);
     if (eff < best_eff) best_eff = eff, best_p = r.rr_continue_prob;
-    if (k == 10) eff_1 = eff, eff_1_se = m.relmse_se * m.seconds, err_p1 = m.relmse;
-    if (k == 7) eff_07 = eff, eff_07_se = m.relmse_se * m.seconds;
+    if (k == 10) eff_1 = eff, eff_1_se = eff_se, err_p1 = m.relmse;
+    if (k == 7) eff_07 = eff, eff_07_se = eff_se;
   }
   // Error against time: a hard cut without roulette (p = 1) at depth m,
   // against roulette (p = 0.7, -m 64) at growing sample counts.

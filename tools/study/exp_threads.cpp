@@ -18,8 +18,7 @@ Experiment run_threads(const Options& opt) {
   const int reps = opt.quick ? 3 : 5;
   e.scene = "cornell_spheres, -m 5 --rr 0.7 -l 1 -s " + std::to_string(r.ns_aa) + ", " + std::to_string(opt.width) +
             "×" + std::to_string(opt.height) + ", " + std::to_string(reps) + " runs on each thread count, in turns";
-  std::string load_before;
-  std::getline(std::ifstream("/proc/loadavg"), load_before);
+  const std::string load_before = load_average();
   Table t(core_columns({"threads", "mrays_per_second", "identical_image"}));
   std::vector<double> secs[2], ratios;
   double rays = 0;
@@ -61,8 +60,7 @@ Experiment run_threads(const Options& opt) {
   for (double x : ratios) rm += x / reps;
   for (double x : ratios) rv += (x - rm) * (x - rm) / (reps - 1);
   const std::string speedup = pm(rm, std::sqrt(rv / reps), "×");
-  std::string load_after;
-  std::getline(std::ifstream("/proc/loadavg"), load_after);
+  const std::string load_after = load_average();
   e.headline.push_back({"threads_speedup", speedup});
   e.headline.push_back({"threads_mrays_1", fmt("%.3g", rays / secs[0][0] / 1e6)});
   e.gnuplot = R"GP(set title "Throughput on 1 and 2 threads (Cornell box, -m 5)"
@@ -79,7 +77,7 @@ plot "threads.csv" using 12:13 with boxes lc rgb "#1f77b4" notitle, \
 )GP";
   e.html = "<p>One render timed " + std::to_string(reps) + " times on each thread count, in turns: 2 threads run " +
            speedup + " as fast as one (median of the paired ratios " + fmt("%.2f", median) +
-           "). The load average was " + load_before.substr(0, 14) + " before and " + load_after.substr(0, 14) +
+           "). The load average was " + load_before + " before and " + load_after +
            " after: on a shared machine another process takes part of the second core, and every wall time on this "
            "page carries that. The images on 1 and 2 threads are " +
            (identical ? "identical, pixel for pixel." : "<b>not identical</b> (a bug: every pixel has its own stream).") +

@@ -37,8 +37,10 @@ std::string read_text(const fs::path& p) {
 
 }  // namespace
 
-// The CSVs: comma-separated, a header row, "nan" where a column does not apply.
-constexpr const char* kCsv = "set datafile separator comma\nset datafile missing \"nan\"\n";
+// The CSVs: comma-separated, a header row, "nan" where a column does not
+// apply (read as NaN: a point with NaN is not drawn, and ($k == $k ? $k : 0)
+// turns a missing error bar into none).
+constexpr const char* kCsv = "set datafile separator comma\n";
 
 bool have_gnuplot() { return std::system("gnuplot --version > /dev/null 2>&1") == 0; }
 

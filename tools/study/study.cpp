@@ -296,6 +296,13 @@ void write_picture(const Options& opt, const std::string& file, const Image& img
   write_png((fs::path(opt.out) / file).string(), img);
 }
 
+std::string load_average() {
+  std::ifstream f("/proc/loadavg");
+  std::string a, b, c;
+  f >> a >> b >> c;
+  return f ? a + " " + b + " " + c : "unknown";
+}
+
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }

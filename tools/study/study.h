@@ -130,6 +130,8 @@ std::string pm(double v, double se, const char* unit = "");
 // A PNG in the output folder: the image at exposure 0.
 void write_picture(const Options& opt, const std::string& file, const Image& img);
 double now_seconds();
+// The 1-, 5- and 15-minute load averages, "4.16 5.61 6.38".
+std::string load_average();
 
 // The experiments, in the page's order.
 Experiment run_bvh(const Options& opt);
