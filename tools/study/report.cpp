@@ -114,7 +114,12 @@ pre { background: #f4f4f4; padding: 0.5em; white-space: pre-wrap; }
 <body>
 <h1>Speed against accuracy: the path tracer's methods, measured</h1>
 )";
-  h << "<pre>" << html_escape(machine) << "</pre>\n";
+  // Every run into this folder, newest last: an --only run keeps the facts
+  // of the runs that made the other sections.
+  {
+    std::ofstream(fs::path(opt.out) / "runs.log", std::ios::app) << machine << "\n\n";
+  }
+  h << "<pre>" << html_escape(read_text(fs::path(opt.out) / "runs.log")) << "</pre>\n";
   h << "<p>Every relMSE is measured against a converged reference rendered by the same code (reference solution) at "
        "the sample count stated per experiment, cached in <code>references/</code> with a sidecar; the reference's "
        "own expected contribution, a/N (a: the relative variance of one of its samples, measured from 32 "
