@@ -1,7 +1,7 @@
 // pt-study: speed against accuracy, charted, for the methods of the five parts
 // (README.md beside this file).
 //
-//   pt-study --out study/                 the full study (11 minutes on a shared 2-core VM)
+//   pt-study --out study/                 the full study (8 minutes on a shared 2-core VM)
 //   pt-study --quick --out /tmp/q         every experiment at toy size (the ctest `study` runs this)
 //   pt-study --only adaptive --out study/ one experiment; the page keeps the others
 #include <cstdio>
