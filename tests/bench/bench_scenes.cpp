@@ -261,4 +261,24 @@ std::vector<Ray> random_rays(const BBox& b, size_t n, uint64_t seed, bool segmen
   return rays;
 }
 
+// --- Brute force and the machine -----------------------------------------------
+bool brute_closest(const std::vector<Primitive*>& prims, const Ray& r, Intersection* isect) {
+  bool hit = false;
+  for (const Primitive* p : prims) hit |= p->intersect(r, isect);
+  return hit;
+}
+bool brute_any(const std::vector<Primitive*>& prims, const Ray& r) {
+  for (const Primitive* p : prims)
+    if (p->has_intersection(r)) return true;
+  return false;
+}
+
+std::string cpu_model() {
+  std::ifstream f("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
 }  // namespace pt::bench

@@ -68,4 +68,13 @@ std::vector<Ray> camera_rays(const Camera& camera, int w, int h);
 // points). The same seed gives the same o and p either way.
 std::vector<Ray> random_rays(const BBox& b, size_t n, uint64_t seed, bool segments);
 
+// --- Brute force and the machine -----------------------------------------------
+// Every primitive in scene order through the virtual Primitive interface (the
+// baseline a BVH is measured against; any hit stops at the first hit).
+bool brute_closest(const std::vector<Primitive*>& prims, const Ray& r, Intersection* isect);
+bool brute_any(const std::vector<Primitive*>& prims, const Ray& r);
+
+// The CPU's model name (/proc/cpuinfo), for reports.
+std::string cpu_model();
+
 }  // namespace pt::bench

@@ -199,18 +199,6 @@ bool agree_to_float_precision(double ours, double other, double diag) {
   return ours == kInf || std::abs(ours - other) <= 1e-5 * (diag + std::abs(ours));
 }
 
-// --- Brute force --------------------------------------------------------------------
-bool brute_closest(const std::vector<Primitive*>& prims, const Ray& r, Intersection* isect) {
-  bool hit = false;
-  for (const Primitive* p : prims) hit |= p->intersect(r, isect);
-  return hit;
-}
-bool brute_any(const std::vector<Primitive*>& prims, const Ray& r) {
-  for (const Primitive* p : prims)
-    if (p->has_intersection(r)) return true;
-  return false;
-}
-
 #ifdef PT_HAVE_EMBREE
 struct FRay {
   float o[3], d[3], tnear, tfar;
@@ -565,13 +553,6 @@ std::string read_first_line(const std::string& path) {
   std::string s;
   std::getline(f, s);
   return s;
-}
-std::string cpu_model() {
-  std::ifstream f("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
 }
 
 std::vector<std::string> ladder_descriptions() {

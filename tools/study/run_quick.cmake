@@ -1,0 +1,15 @@
+# ctest study:quick: pt-study --quick into a fresh folder, then the checker.
+#   cmake -DSTUDY=<pt-study> -DCHECK=<pt-study-check> -DOUT=<folder> -P run_quick.cmake
+file(REMOVE_RECURSE ${OUT})
+string(TIMESTAMP t0 "%s")
+execute_process(COMMAND ${STUDY} --quick --out ${OUT} RESULT_VARIABLE rc)
+string(TIMESTAMP t1 "%s")
+math(EXPR secs "${t1} - ${t0}")
+message(STATUS "pt-study --quick took ${secs} s")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pt-study --quick --out ${OUT} failed (${rc})")
+endif()
+execute_process(COMMAND ${CHECK} ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pt-study-check ${OUT}: the study's output is incomplete or points the wrong way")
+endif()
