@@ -40,6 +40,16 @@ function(copy_file from to)
   file(COPY_FILE ${from} ${OUT}/${to})
 endfunction()
 
+# strip_debug(<file relative to OUT>): when -DOBJCOPY is given.
+function(strip_debug rel)
+  if(DEFINED OBJCOPY AND OBJCOPY)
+    execute_process(COMMAND ${OBJCOPY} --strip-debug ${OUT}/${rel} RESULT_VARIABLE rc)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "export.cmake: ${OBJCOPY} --strip-debug ${rel} failed")
+    endif()
+  endif()
+endfunction()
+
 # Scenes and their reference images go to both: students compare with them,
 # the grader's report shows them.
 set(scene_excludes "/build/" "\\.blend1?$")
@@ -99,14 +109,9 @@ elseif(MODE STREQUAL "kit")
   copy_file(${PT_GRADE} bin/pt-grade)
   copy_file(${PT_LINK_GUARD} bin/pt-link-guard)
   copy_file(${PT_LIBRARY_CHECK} bin/pt-library-check)
-  if(DEFINED OBJCOPY AND OBJCOPY)  # the grader's tools need no debug information either
-    foreach(tool pt-grade pt-link-guard pt-library-check)
-      execute_process(COMMAND ${OBJCOPY} --strip-debug ${OUT}/bin/${tool} RESULT_VARIABLE rc)
-      if(NOT rc EQUAL 0)
-        message(FATAL_ERROR "export.cmake: ${OBJCOPY} --strip-debug bin/${tool} failed")
-      endif()
-    endforeach()
-  endif()
+  foreach(tool pt-grade pt-link-guard pt-library-check)  # the grader's tools need no debug information either
+    strip_debug(bin/${tool})
+  endforeach()
   copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
   file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
   foreach(lib IN LISTS libs)
@@ -114,12 +119,7 @@ elseif(MODE STREQUAL "kit")
     copy_file(${lib} lib/${name})
     # Without debug information the kit is a tenth of the size: a submission's
     # copy of it and its links are that much faster.
-    if(DEFINED OBJCOPY AND OBJCOPY)
-      execute_process(COMMAND ${OBJCOPY} --strip-debug ${OUT}/lib/${name} RESULT_VARIABLE rc)
-      if(NOT rc EQUAL 0)
-        message(FATAL_ERROR "export.cmake: ${OBJCOPY} --strip-debug ${name} failed")
-      endif()
-    endif()
+    strip_debug(lib/${name})
   endforeach()
 elseif(MODE STREQUAL "gradescope")
   # Gradescope's autograder.zip: its two scripts at the top, the course's
