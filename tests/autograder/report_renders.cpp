@@ -42,15 +42,20 @@ struct SceneRender {
   std::vector<std::string> arguments;
 };
 
+RenderComparison comparison_of(const SceneRender& s) {
+  RenderComparison c;
+  c.scene = s.name;
+  c.purpose = s.purpose;
+  c.settings = s.settings;
+  return c;
+}
+
 // One render of one scene by `renderer` in the sandbox, judged by the kit's
 // pt-library-check into `checked` (a folder the sandbox cannot write).
 RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, const fs::path& renderer,
                                   const fs::path& out, const fs::path& checked, Sandbox& sandbox,
                                   Clock::time_point end) {
-  RenderComparison c;
-  c.scene = s.name;
-  c.purpose = s.purpose;
-  c.settings = s.settings;
+  RenderComparison c = comparison_of(s);
   // Each render gets at most a third of what is left, and 20 s: a renderer
   // that hangs on the first scene leaves time for the others.
   const double limit = std::max(1.0, std::min(20.0, seconds_until(end) / 3));
@@ -151,25 +156,24 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
     return;
   }
 
+  // Which renders are wrong: flagged by the check, or failed (a crash, a
+  // missing image); not those the budget left unmade.
+  std::vector<size_t> wrong;
   for (const auto& s : scenes) {
+    RenderComparison c = comparison_of(s);
     if (seconds_until(end) < 2) {
-      RenderComparison c;
-      c.scene = s.name;
-      c.purpose = s.purpose;
-      c.settings = s.settings;
       c.error = "not rendered: the report's render budget (" + std::to_string(int(job.seconds)) + " s) ran out";
-      page.renders.push_back(c);
-      continue;
+    } else {
+      c = render_and_check(job, s, tree / "build" / "pathtracer", renders, tree / "checked", sandbox, end);
+      c.student_parts.assign(job.student_parts.begin(), job.student_parts.end());
+      if (c.flagged || !c.error.empty()) wrong.push_back(page.renders.size());
     }
-    RenderComparison c = render_and_check(job, s, tree / "build" / "pathtracer", renders, tree / "checked", sandbox, end);
-    c.student_parts.assign(job.student_parts.begin(), job.student_parts.end());
     page.renders.push_back(c);
   }
 
-  // Which part a flagged image points at.
+  // Which part a wrong image points at.
   std::vector<RenderComparison*> flagged;
-  for (auto& c : page.renders)
-    if (c.flagged || (!c.error.empty() && c.error.rfind("not rendered", 0) != 0)) flagged.push_back(&c);
+  for (size_t i : wrong) flagged.push_back(&page.renders[i]);
   if (!flagged.empty() && job.student_parts.size() == 1) {
     for (auto* c : flagged) c->suspect = job.part_names.at(*job.student_parts.begin());
   } else if (!flagged.empty()) {

@@ -18,6 +18,7 @@
 //    image is flagged alone are the suspects; with one part, that part.
 // Renders never change the score: they are for the person reading the page.
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -39,7 +40,7 @@ struct RenderJob {
   std::string renders_dir;
   std::string configure_parts;     // PT_PARTS_SUBMITTED as configured ("1;3")
   std::set<int> student_parts;     // the parts the renders take from the student
-  std::vector<std::string> part_names;  // index n: "part n (tasks/partn_....cpp)"
+  std::map<int, std::string> part_names;  // n -> "part n (tasks/partn_....cpp)"
   double seconds = 60;             // builds and renders together
   double build_seconds = 50;       // one renderer's build
 };

@@ -299,11 +299,11 @@ int grade_submission(const SubmissionOptions& opt) {
       job.kit = kit.string();
       job.tree = tree.string();
       job.configure_parts = parts_list;
-      job.part_names.assign(6, "");
-      for (int n = 1; n <= 5; ++n)
-        job.part_names[n] = "part " + std::to_string(n) + (expected.count(n) ? " (tasks/" + expected.at(n) + ")" : "");
-      for (const auto& p : report.parts)
+      for (const auto& p : report.parts) {
+        job.part_names[p.part] =
+            "part " + std::to_string(p.part) + (expected.count(p.part) ? " (tasks/" + expected.at(p.part) + ")" : "");
         if (binaries.count(p.part) && p.earned() > 0) job.student_parts.insert(p.part);
+      }
       job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
       job.build_seconds = opt.build_seconds;
       std::string renders_pattern = (work / "pt-renders-XXXXXX").string();
