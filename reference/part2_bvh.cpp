@@ -1,7 +1,7 @@
 // Part 2 reference: a binned surface-area-heuristic BVH, traversed front to
 // back with an explicit stack.
 //
-// Where its speed comes from (measured with pt-bench; tests/bench/README.md):
+// Where its speed comes from (measured with pt-bench; tools/bench/README.md):
 //  * The traversal tests every box once, from its parent, with the ray's
 //    reciprocal direction computed once per query. The nearer child is
 //    visited first; the farther one waits on a stack with its entry distance

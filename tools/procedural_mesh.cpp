@@ -6,7 +6,7 @@
 //   pt-procedural-mesh -o /tmp/bumpy_50k --triangles 50000          # the nearest size: n = 65, 50,700
 //
 // The mesh is pt-bench's "bumpy-sphere" (make_bumpy_sphere in
-// tests/bench/bench_scenes.h: a cube-sphere of 12 n^2 triangles displaced by
+// tools/bench/bench_scenes.h: a cube-sphere of 12 n^2 triangles displaced by
 // fixed sinusoids), so a study over mesh size renders the same shape at every
 // size. Nothing here is random: the same n writes the same files.
 #include <algorithm>

@@ -18,8 +18,9 @@
 #include "render/limits.h"
 #include "render/renderer.h"
 #include "scene/course_camera.h"
-#include "scene/scene_info.h"
-#include "scene/scene_loader.h"
+#include "io/image_file.h"
+#include "io/scene_info.h"
+#include "io/scene_loader.h"
 
 namespace pt {
 

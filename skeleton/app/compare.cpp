@@ -7,6 +7,7 @@
 
 #include "app/command_line.h"
 #include "render/image.h"
+#include "io/image_file.h"
 
 namespace {
 

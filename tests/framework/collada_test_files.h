@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "scene/collada_loader.h"
+#include "io/collada_loader.h"
 
 namespace pt {
 

@@ -11,7 +11,7 @@
 #include "collada_test_files.h"
 #include "geometry/sphere.h"
 #include "scene/course_camera.h"
-#include "scene/scene_info.h"
+#include "io/scene_info.h"
 
 namespace pt {
 namespace {
@@ -392,6 +392,40 @@ TEST_F(ColladaCameras, OrthographicOrMissingCamerasFallBackToTheCourseFraming) {
   // default looks along -z from 1.5 sqrt(2) away.
   EXPECT_VEC_NEAR(ortho.scene.camera.pos, Vec3(0.5, 0.5, 1.5 * std::sqrt(2.0)), 1e-12);
   EXPECT_VEC_NEAR(-ortho.scene.camera.c2w[2], Vec3(0, 0, -1), 1e-12);
+}
+
+// The course's CBgems.dae has a camera <matrix> of 15 numbers, and the course's
+// reader takes it (a stream read leaves the missing number 0): so does this one.
+TEST_F(ColladaCameras, AShortMatrixReadsItsMissingNumbersAsZeroWithAWarning) {
+  // The last number missing: the last row is 0 0 0 0, which drops a point's w
+  // as the course's renderer does; the camera sits at the matrix's (0, 1, 4).
+  LoadedScene fifteen = with_camera("<yfov>40</yfov>", "<matrix>1 0 0 0  0 1 0 1  0 0 1 4  0 0 0</matrix>");
+  EXPECT_VEC_NEAR(fifteen.scene.camera.pos, Vec3(0, 1, 4), 0.0);
+  EXPECT_VEC_NEAR(-fifteen.scene.camera.c2w[2], Vec3(0, 0, -1), 0.0);
+  EXPECT_DOUBLE_EQ(fifteen.scene.camera.vfov, 40.0);
+  EXPECT_EQ(count_containing(fifteen.warnings, "node[@id='cam-node']/matrix: expected 16 numbers, got 15: the "
+                                               "missing ones are read as 0, as the course's reader does"),
+            1u);
+  EXPECT_EQ(fifteen.warnings.size(), 1u);
+
+  // Four numbers leave no view direction: the course viewer's default framing
+  // (along -z at the box's centre from 1.5x its diagonal), the file's fovs kept.
+  LoadedScene four = with_camera("<yfov>40</yfov>", "<matrix>1 0 0 2</matrix>");
+  EXPECT_EQ(count_containing(four.warnings, "got 4: the missing ones are read as 0"), 1u);
+  EXPECT_EQ(count_containing(four.warnings, "node[@id='cam-node']/instance_camera: a short <matrix> leaves the camera"),
+            1u);
+  EXPECT_VEC_NEAR(four.scene.camera.pos, Vec3(0.5, 0.5, 1.5 * std::sqrt(2.0)), 1e-12);
+  EXPECT_VEC_NEAR(-four.scene.camera.c2w[2], Vec3(0, 0, -1), 1e-12);
+}
+
+using ColladaShortMatrix = DaeFiles;
+
+TEST_F(ColladaShortMatrix, AShortMatrixOnGeometryPlacesItAsTheCoursesReaderWould) {
+  // 15 numbers on a mesh node: the translation (1, 2, 3) still applies.
+  LoadedScene loaded = load(collada_document(
+      "", R"(<node id="n"><matrix>1 0 0 1  0 1 0 2  0 0 1 3  0 0 0</matrix><instance_geometry url="#tri"/></node>)"));
+  EXPECT_TRUE(has_triangle(loaded.scene, Vec3(1, 2, 3), Vec3(2, 2, 3), Vec3(1, 3, 3)));
+  EXPECT_EQ(count_containing(loaded.warnings, "node[@id='n']/matrix: expected 16 numbers, got 15"), 1u);
 }
 
 // ---------------------------------------------------------------- --course-camera

@@ -186,7 +186,7 @@ TEST_F(ColladaErrors, TransformsThatPlaceNothing) {
   };
   EXPECT_TRUE(contains(with_node("<matrix>1 0 0 0  0 1 0 0  0 0 1 0  1 2 3 1</matrix>"),
                        "node[@id='n']/matrix: the last row must be 0 0 0 1"));
-  EXPECT_TRUE(contains(with_node("<matrix>1 0 0 0  0 1 0 0  0 0 1 0  0 0 0</matrix>"), "expected 16 numbers, got 15"));
+  EXPECT_TRUE(contains(with_node("<matrix>1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1  0</matrix>"), "expected 16 numbers, got 17"));
   EXPECT_TRUE(contains(with_node("<rotate>0 0 0 90</rotate>"), "/rotate: the rotation axis must not be zero"));
   EXPECT_TRUE(contains(with_node("<lookat>0 0 0  0 0 0  0 1 0</lookat>"), "/lookat: eye and interest must differ"));
   EXPECT_TRUE(contains(with_node("<scale>1e20 1 1</scale><scale>1e20 1 1</scale>"),

@@ -13,6 +13,7 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "render/image.h"
+#include "io/image_file.h"
 
 namespace pt {
 namespace {

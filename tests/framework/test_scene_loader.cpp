@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "geometry/sphere.h"
-#include "scene/scene_loader.h"
+#include "io/scene_loader.h"
 
 namespace fs = std::filesystem;
 

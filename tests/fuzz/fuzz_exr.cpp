@@ -5,7 +5,8 @@
 
 #include "fuzz_input.h"
 #include "render/image.h"
-#include "scene/scene_loader.h"
+#include "io/image_file.h"
+#include "io/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return pt::fuzz::load_as_file(data, size, "image.exr", [](const std::string& path) {

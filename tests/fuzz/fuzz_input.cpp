@@ -6,7 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "scene/scene_loader.h"
+#include "io/scene_loader.h"
 
 namespace fs = std::filesystem;
 

@@ -164,7 +164,7 @@ std::string write_zip(const fs::path& zip, const json& entries, const fs::path& 
 }
 
 // The words a lost test's message must hold when a layer before the run
-// stopped its part (the messages of tests/autograder/submission.cpp).
+// stopped its part (the messages of autograder/submission.cpp).
 std::string layer_pattern(const std::string& stopped_at) {
   if (stopped_at == "intake") return "rejected before building";
   if (stopped_at == "build") return "does not build|did not build within|the compiler read files outside";

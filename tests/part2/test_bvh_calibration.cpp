@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <functional>
 
-#include "scene/obj_loader.h"
-#include "scene/scene_loader.h"
+#include "io/obj_loader.h"
+#include "io/scene_loader.h"
 #include "support/bvh_checks.h"
 #include "support/part2_baseline.h"
 #include "support/part2_scenes.h"

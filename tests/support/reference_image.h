@@ -10,6 +10,7 @@
 #include <string>
 
 #include "render/image.h"
+#include "io/image_file.h"
 #include "support/error_model.h"
 
 namespace pt::library {

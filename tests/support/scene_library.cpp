@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/scene_loader.h"
+#include "io/scene_loader.h"
 
 namespace pt::library {
 

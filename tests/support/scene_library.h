@@ -22,7 +22,7 @@
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "scene/scene.h"
-#include "scene/scene_loader.h"
+#include "io/scene_loader.h"
 
 namespace pt::library {
 

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "render/image.h"
+#include "io/image_file.h"
 
 namespace pt::stats {
 

@@ -12,7 +12,7 @@
 // the dynamic loader runs those entries before every static initializer, and
 // this file is linked first, so no code of a task file runs while the key is
 // still in its descriptor. What that does and does not stop is in
-// tests/autograder/README.md.
+// autograder/README.md.
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>

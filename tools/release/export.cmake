@@ -74,9 +74,9 @@ if(MODE STREQUAL "student")
   copy_tree(tests/cli)
   # The grader, for `pt-grade run` on the student's own machine; not the
   # instructor's threat model, kit or Gradescope packaging.
-  copy_tree(tests/autograder EXCLUDE "^tests/autograder/(kit|gradescope)/" "^tests/autograder/README\\.md$")
+  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope)/" "^autograder/README\\.md$" "^autograder/tests/(test_gradescope|test_report)\\.sh$" "^autograder/tests/browser/")
   # The benchmark, without the ladder of traversals from the reference to Embree.
-  copy_tree(tests/bench EXCLUDE "/ladder\\.(h|cpp)$")
+  copy_tree(tools/bench EXCLUDE "/ladder\\.(h|cpp)$")
   # The generator of the library's procedural scene (the library tests render
   # it); not the reference images' renderer, which needs reference/.
   copy_file(${S}/tools/CMakeLists.txt tools/CMakeLists.txt)
@@ -94,8 +94,8 @@ elseif(MODE STREQUAL "kit")
       message(FATAL_ERROR "export.cmake: MODE kit needs -D${v}=...")
     endif()
   endforeach()
-  copy_file(${S}/tests/autograder/kit/CMakeLists.txt CMakeLists.txt)
-  copy_file(${S}/tests/autograder/kit/README.md README.md)
+  copy_file(${S}/autograder/kit/CMakeLists.txt CMakeLists.txt)
+  copy_file(${S}/autograder/kit/README.md README.md)
   # Headers a task file may include, and nothing else of the framework's source.
   file(GLOB_RECURSE headers RELATIVE ${S}/skeleton ${S}/skeleton/*.h)
   foreach(h IN LISTS headers)
@@ -125,13 +125,13 @@ elseif(MODE STREQUAL "gradescope")
   # Gradescope's autograder.zip: its two scripts at the top, the course's
   # repository (the solution included: the zip is the instructor's) below.
   foreach(f setup.sh run_autograder README.md)
-    copy_file(${S}/tests/autograder/gradescope/${f} ${f})
+    copy_file(${S}/autograder/gradescope/${f} ${f})
   endforeach()
   set(prefix pathtracer/)
   foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
     copy_file(${S}/${f} ${prefix}${f})
   endforeach()
-  foreach(d skeleton tasks reference tests scenes handouts tools)  # tools/: the root CMakeLists adds it
+  foreach(d skeleton tasks reference tests autograder scenes handouts tools)  # tools/: the root CMakeLists adds it
     copy_tree(${d} EXCLUDE ${scene_excludes})
   endforeach()
 else()

@@ -5,7 +5,7 @@
 // Fails (exit 1, listing each finding) when
 //  * a file or folder of the release is one the release must leave out
 //    (reference/, tests/mutants/, tests/hostile/, tests/partN/hidden/,
-//    tests/support/compiled/, tests/bench/ladder.*);
+//    tests/support/compiled/, tools/bench/ladder.*);
 //  * any file of it (text, or the bytes of a binary: the prebuilt libraries
 //    included) holds a non-trivial line of SOURCE/reference/*.cpp: at least 24
 //    characters once whitespace is removed (shorter lines are declarations

@@ -29,7 +29,7 @@ while IFS= read -r cmd; do
   bash -c "$cmd"
 done <<< "$setup"
 
-grade=./build/tests/autograder/pt-grade
+grade=./build/autograder/pt-grade
 echo "== 4. the stubs grade 0, naming their tasks"
 for n in 1 2 3 4 5; do
   "$grade" check-stubs --part "$n" "build/tests/part${n}_tests"

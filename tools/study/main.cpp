@@ -16,7 +16,7 @@
 
 #include "bench_scenes.h"
 #include "report.h"
-#include "scene/scene_loader.h"
+#include "io/scene_loader.h"
 #include "study.h"
 
 namespace fs = std::filesystem;

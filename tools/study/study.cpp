@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/image_file.h"
 #include "render/pathtracer.h"
 #include "support/error_model.h"
 

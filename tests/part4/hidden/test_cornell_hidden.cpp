@@ -21,6 +21,7 @@
 #include "core/frame.h"
 #include "core/sampling.h"
 #include "render/image.h"
+#include "io/image_file.h"
 #include "render/renderer.h"
 #include "support/graded.h"
 #include "support/scene_builders.h"

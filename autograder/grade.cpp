@@ -1,0 +1,360 @@
+// pt-grade: scores the graded GoogleTest binaries (DESIGN.md section 6),
+// checks the stubs and the mutant gallery with the same machinery, and writes
+// the manifest those rely on. How it keeps a hostile submission from writing
+// its own grade: README.md beside this file.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "checks.h"
+#include "grade_part.h"
+#include "manifest.h"
+#include "redact.h"
+#include "report.h"
+#include "sandbox.h"
+#include "submission.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace pt::grade;
+
+struct Options {
+  GradeLimits limits;
+  double submission_seconds = 540;
+  SandboxOptions sandbox;
+  std::string manifest;
+};
+
+// A trusted binary's own listing (`pt-grade manifest`), or, with no manifest,
+// the listing of the binary under test, which a hostile one can fake.
+PartManifest list_tests(int part, const std::string& binary, Sandbox& sandbox) {
+  struct Wait : RunObserver {
+    Clock::time_point end = Clock::now() + std::chrono::seconds(60);
+    void on_channel(std::string_view) override {}
+    Deadline deadline() const override { return {end, 60}; }
+  } wait;
+  const RunOutcome r = sandbox.run({binary, {"--pt_list_graded"}, "", ""}, wait);
+  if (!r.exit.exited_ok())
+    throw std::runtime_error(binary + " --pt_list_graded " + r.exit.describe() + ":\n" + r.output.substr(0, 2000));
+  try {
+    return parse_listing(part, r.output);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(binary + " --pt_list_graded: " + e.what());
+  }
+}
+
+// The manifest's tests of a part; without a manifest, what the binary says,
+// with a note in the report that it was not a trusted list.
+PartManifest tests_of(int part, const std::string& binary, const Manifest* manifest, Sandbox& sandbox,
+                      std::vector<std::string>& notes) {
+  if (manifest) {
+    auto it = manifest->parts.find(part);
+    if (it != manifest->parts.end()) return it->second;
+    throw std::runtime_error("the manifest lists no part " + std::to_string(part));
+  }
+  notes.push_back("part " + std::to_string(part) +
+                  ": no manifest: the tests and their points were read from the binary under test, which a hostile "
+                  "submission can fake (build the target graded_manifest, or pass --manifest)");
+  return list_tests(part, binary, sandbox);
+}
+
+std::unique_ptr<Manifest> load_manifest(const std::string& path) {
+  if (path.empty()) return nullptr;
+  return std::make_unique<Manifest>(read_manifest(path));
+}
+
+Report start_report(const Sandbox& sandbox) {
+  Report r;
+  r.sandbox_layers = sandbox.layers();
+  r.sandbox_missing = sandbox.layers_missing();
+  r.sandbox_ids = sandbox.layer_ids();
+  for (const auto& m : sandbox.layers_missing()) r.notes.push_back("sandbox layer missing: " + m);
+  return r;
+}
+
+int run(const std::string& build_dir, const std::vector<int>& numbers, const std::map<int, std::string>& binaries,
+        Options opt, const std::string& json_path, bool show_hidden) {
+  const auto start = Clock::now();
+  opt.limits.deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(opt.submission_seconds));
+  if (opt.manifest.empty()) {
+    const fs::path found = fs::path(build_dir) / "tests" / "graded_manifest.json";
+    if (fs::is_regular_file(found)) opt.manifest = found.string();
+  }
+  // Read once, before any code under test runs, and never again.
+  const auto manifest = load_manifest(opt.manifest);
+  const Redactor redactor(manifest ? manifest->solution_lines : std::set<uint64_t>());
+  Sandbox sandbox(opt.sandbox);
+  Report report = start_report(sandbox);
+  auto save = [&] {
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!json_path.empty()) write_results_json(json_path, report);
+  };
+
+  std::vector<std::string> paths;
+  for (int n : numbers) {
+    auto it = binaries.find(n);
+    paths.push_back(it != binaries.end() ? it->second
+                                         : (fs::path(build_dir) / "tests" / ("part" + std::to_string(n) + "_tests")).string());
+  }
+  // Every part is in the report, 0 of its maximum, before anything runs: an
+  // outer timeout or a killed grader still leaves an honest partial report.
+  std::vector<PartManifest> tests(numbers.size());
+  for (size_t i = 0; i < numbers.size(); ++i) {
+    if (manifest || fs::is_regular_file(paths[i])) tests[i] = tests_of(numbers[i], paths[i], manifest.get(), sandbox, report.notes);
+    report.parts.push_back(pending_part(numbers[i], tests[i], "not graded yet: the grader stopped before this part"));
+  }
+  save();
+  for (size_t i = 0; i < numbers.size(); ++i) {
+    if (!fs::is_regular_file(paths[i])) {
+      report.parts[i] = pending_part(numbers[i], tests[i], "not graded: " + paths[i] + " not found");
+      report.notes.push_back("part " + std::to_string(numbers[i]) + ": " + paths[i] + " not found, not graded");
+      continue;
+    }
+    report.parts[i] = grade_binary(numbers[i], paths[i], tests[i], opt.limits, sandbox, paths[i] + ".grade.log",
+                                   redactor);
+    save();  // the run's processes are all dead by now: nothing of it outlives this write
+  }
+  report.complete = true;
+  save();
+  bool any = false;
+  for (const auto& p : report.parts) any = any || p.graded;
+  if (!any) {
+    for (const auto& n : report.notes) std::fprintf(stderr, "pt-grade: %s\n", n.c_str());
+    std::fprintf(stderr, "pt-grade: no test binaries found under %s/tests: build them first\n", build_dir.c_str());
+    return 2;
+  }
+  print_report(report, show_hidden);
+  return 0;
+}
+
+PartResult grade_one(int part, const std::string& binary, const Options& opt) {
+  const auto manifest = load_manifest(opt.manifest);
+  Sandbox sandbox(opt.sandbox);
+  std::vector<std::string> notes;
+  const PartManifest tests = tests_of(part, binary, manifest.get(), sandbox, notes);
+  PartResult r = grade_binary(part, binary, tests, opt.limits, sandbox, binary + ".grade.log",
+                              Redactor(manifest ? manifest->solution_lines : std::set<uint64_t>()));
+  r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
+  return r;
+}
+
+int write_manifest_from(const std::string& out, const std::vector<std::string>& listed,
+                        const std::vector<std::string>& solution_files) {
+  SandboxOptions plain;
+  plain.confine = false;  // the all-reference binaries are the grader's own
+  Sandbox sandbox(plain);
+  Manifest m;
+  std::map<int, std::string> sources;
+  for (const auto& item : listed) {
+    const auto eq = item.find('=');
+    const int part = eq == std::string::npos ? 0 : std::atoi(item.substr(0, eq).c_str());
+    if (part < 1 || part > 99) throw std::runtime_error("expected PART=BINARY, got " + item);
+    const std::string binary = item.substr(eq + 1);
+    m.parts[part] = list_tests(part, binary, sandbox);
+    sources[part] = fs::path(binary).filename().string();
+  }
+  for (const auto& file : solution_files)
+    for (uint64_t h : line_fingerprints(file)) m.solution_lines.insert(h);
+  write_manifest(out, m, sources);
+  return 0;
+}
+
+int print_sandbox(const SandboxOptions& options) {
+  const Sandbox sandbox(options);
+  const nlohmann::json j = {{"uid", ::geteuid()},
+                            {"layers", sandbox.layers()},
+                            {"missing", sandbox.layers_missing()},
+                            {"ids", sandbox.layer_ids()}};
+  std::cout << j.dump(2) << "\n";
+  return 0;
+}
+
+// A GTEST_FILTER or GTEST_REPEAT left in the environment would silently change
+// what gets graded (the sandbox passes no environment on; plain runs would).
+void scrub_gtest_environment() {
+  std::vector<std::string> names;
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "GTEST_", 6) == 0) {
+      const char* eq = std::strchr(*e, '=');
+      names.emplace_back(*e, eq ? static_cast<size_t>(eq - *e) : std::strlen(*e));
+    }
+  for (const auto& n : names) ::unsetenv(n.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"pt-grade: scores the graded test binaries; checks the stubs and the mutants", "pt-grade"};
+  app.require_subcommand(1);
+  app.footer(
+      "Each binary's output goes to BINARY.grade.log. autograder/README.md has the limits and the sandbox.\n"
+      "Exit status: 0 graded (whatever the score) or check passed, 1 check failed, 2 could not grade.");
+  Options opt;
+#ifdef PT_GRADE_READABLE
+  opt.sandbox.readable = {PT_GRADE_READABLE};
+#endif
+  const CLI::Validator seconds(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        return *end == '\0' && v > 0 && v <= 1e6 ? "" : "expected a number of seconds in (0, 1e6], got " + text;
+      },
+      "");
+  auto add_sandbox_choice = [&](CLI::App* cmd) {
+    cmd->add_option("--sandbox-without", opt.sandbox.without, "leave out these layers, to test the fallbacks")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"namespaces", "user", "landlock", "seccomp"}))
+        ->type_name("LAYER,...");
+    cmd->add_flag("--no-sandbox", [&](std::int64_t) { opt.sandbox.confine = false; },
+                  "run the code under test with only its limits, session and subreaper (debugging only)");
+  };
+  auto add_grading = [&](CLI::App* cmd) {
+    cmd->add_option("--manifest", opt.manifest, "the trusted list of graded tests (pt-grade manifest)")
+        ->type_name("FILE")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--test-timeout", opt.limits.test_seconds, "time allowed to one test")
+        ->check(seconds)
+        ->type_name("SECONDS")
+        ->capture_default_str();
+    cmd->add_option("--part-budget,--timeout", opt.limits.part_seconds, "time allowed to all runs of one part")
+        ->check(seconds)
+        ->type_name("SECONDS")
+        ->capture_default_str();
+    cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
+        ->type_name("USER")
+        ->capture_default_str();
+    cmd->add_option("--sandbox-read", opt.sandbox.readable, "a path the code under test may read (repeatable)")
+        ->type_name("PATH");
+    cmd->add_option("--sandbox-processes", opt.sandbox.limits.processes,
+                    "processes and threads the code under test may have, where that can be counted")
+        ->check(CLI::Range(8, 100000))
+        ->type_name("N")
+        ->capture_default_str();
+    add_sandbox_choice(cmd);
+  };
+
+  std::string build_dir = "build", json_path;
+  std::vector<int> parts{1, 2, 3, 4, 5};
+  std::vector<std::string> binary_args;
+  bool show_hidden = false;
+  CLI::App* run_cmd = app.add_subcommand("run", "grade DIR/tests/partN_tests of each part (the default)");
+  run_cmd->add_option("--build-dir", build_dir, "build directory")->type_name("DIR")->capture_default_str();
+  run_cmd->add_option("--parts", parts, "parts to grade")->delimiter(',')->type_name("N,...")->capture_default_str();
+  run_cmd->add_option("--binary", binary_args, "grade FILE as part N instead of DIR/tests/partN_tests")
+      ->type_name("N=FILE");
+  add_grading(run_cmd);
+  run_cmd->add_option("--budget", opt.submission_seconds, "time allowed to all parts together")
+      ->check(seconds)
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  run_cmd->add_option("--json", json_path, "write a Gradescope results.json")->type_name("FILE");
+  run_cmd->add_flag("--hidden", show_hidden, "show the names and failures of hidden tests too");
+
+  int part = 0;
+  std::string binary;
+  CLI::App* stubs_cmd = app.add_subcommand("check-stubs", "every graded test must fail naming a task of the part");
+  stubs_cmd->add_option("--part", part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
+  stubs_cmd->add_option("BINARY", binary, "test binary built from the untouched stubs")
+      ->required()
+      ->check(CLI::ExistingFile);
+  add_grading(stubs_cmd);
+
+  CLI::App* mutant_cmd = app.add_subcommand("check-mutant", "at least one graded test must fail");
+  mutant_cmd->add_option("--part", part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
+  mutant_cmd->add_option("BINARY", binary, "test binary built with a mutant")->required()->check(CLI::ExistingFile);
+  add_grading(mutant_cmd);
+  mutant_cmd->add_flag("--fail-fast", opt.limits.stop_at_first_failure, "stop at the first failing test");
+
+  std::string manifest_out;
+  std::vector<std::string> listed, solution_files;
+  CLI::App* manifest_cmd =
+      app.add_subcommand("manifest", "write the manifest from trusted (all-reference) test binaries");
+  manifest_cmd->add_option("--out", manifest_out, "the manifest to write")->required()->type_name("FILE");
+  manifest_cmd->add_option("BINARIES", listed, "each part's all-reference test binary")->required()->type_name("N=FILE");
+  manifest_cmd->add_option("--solution", solution_files, "files whose lines must never reach a report")
+      ->type_name("FILE...")
+      ->check(CLI::ExistingFile);
+
+  SubmissionOptions sub;
+#ifdef PT_DEFAULT_KIT
+  sub.kit = PT_DEFAULT_KIT;
+#endif
+  {
+    // A kit's own copy of pt-grade (KIT/bin/pt-grade) grades with that kit.
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec && fs::is_regular_file(exe.parent_path().parent_path() / "manifest.json"))
+      sub.kit = exe.parent_path().parent_path().string();
+  }
+  CLI::App* submission_cmd = app.add_subcommand(
+      "submission", "build and grade a submission (a folder or .zip of tasks/partN_*.cpp) in the grading kit");
+  submission_cmd->add_option("PATH", sub.path, "the submission: a folder or a .zip")->required();
+  submission_cmd->add_option("--kit", sub.kit, "the grading kit (target grader-kit)")->type_name("DIR")->capture_default_str();
+  submission_cmd->add_option("--json", sub.json_path, "write a Gradescope results.json")->type_name("FILE");
+  submission_cmd->add_option("--html", sub.html_path, "write the report a person reads")->type_name("FILE");
+  submission_cmd->add_option("--work", sub.work, "folder for the build tree (default: TMPDIR)")->type_name("DIR");
+  submission_cmd->add_flag("--keep-work", sub.keep_work, "keep the build tree");
+  submission_cmd->add_flag("--no-renders", [&](std::int64_t) { sub.renders = false; }, "no renders in the report");
+  submission_cmd->add_option("--render-seconds", sub.render_seconds, "time for the report's builds and renders together")
+      ->check(CLI::Range(5.0, 3600.0));
+  submission_cmd->add_option("--build-timeout", sub.build_seconds, "time allowed to build one part")
+      ->check(seconds)
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  submission_cmd->add_option("--budget", sub.budget_seconds, "time allowed to the whole submission")
+      ->check(seconds)
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  add_grading(submission_cmd);
+
+  CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
+  sandbox_cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
+      ->type_name("USER");
+  add_sandbox_choice(sandbox_cmd);
+
+  // `run` is the default: insert it when the first argument is an option.
+  std::vector<char*> args(argv, argv + argc);
+  std::string run_word = "run";
+  if (argc == 1 || (argv[1][0] == '-' && std::strcmp(argv[1], "-h") != 0 && std::strcmp(argv[1], "--help") != 0))
+    args.insert(args.begin() + 1, run_word.data());
+  try {
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  scrub_gtest_environment();
+  try {
+    if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
+    if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
+    if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
+    if (*sandbox_cmd) return print_sandbox(opt.sandbox);
+    if (*submission_cmd) {
+      sub.limits = opt.limits;
+      sub.sandbox = opt.sandbox;
+      return grade_submission(sub);
+    }
+    std::map<int, std::string> binaries;
+    for (const auto& b : binary_args) {
+      const auto eq = b.find('=');
+      const int n = eq == std::string::npos ? 0 : std::atoi(b.substr(0, eq).c_str());
+      if (n < 1) throw std::runtime_error("--binary expects N=FILE, got " + b);
+      binaries[n] = b.substr(eq + 1);
+    }
+    return run(build_dir, parts, binaries, opt, json_path, show_hidden);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pt-grade: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,53 @@
+#pragma once
+// The report's renders (issue 8 section 4): the scene library rendered with
+// the parts of a submission that earned points and the solution of the rest,
+// each judged against its stored reference image.
+//
+// Who does what, and why it can be trusted:
+//  * the kit's `pathtracer` (autograder/kit/CMakeLists.txt), linked with
+//    the student's objects, runs in the sandbox and may write only a fresh
+//    folder: it can make a wrong EXR, nothing else;
+//  * the kit's `pt-library-check` (tools/library_check.cpp: the instructor's
+//    build, no student code) reads that EXR and decides, with the library
+//    test's own check (tests/support/reference_check.h: relMSE against the
+//    error model of the stored reference, and region means, false-alarm
+//    probability 1e-5 per image), whether the error is far beyond what the
+//    sample count explains; it also draws the PNGs the page inlines;
+//  * a flagged image with more than one student part in it is rendered again
+//    with one student part at a time (`pathtracer_part<m>`): the parts whose
+//    image is flagged alone are the suspects; with one part, that part.
+// Renders never change the score: they are for the person reading the page.
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "html_report.h"
+#include "sandbox.h"
+
+namespace pt::grade {
+
+// Runs a trusted build command (cmake) under a time limit; returns its exit
+// status, with its output in *output (submission.cpp's build runner).
+using BuildRunner = std::function<int(const std::vector<std::string>& argv, double seconds, std::string* output)>;
+
+struct RenderJob {
+  std::string kit;                 // the grading kit (its bin/pt-library-check, scenes/)
+  std::string tree;                // the submission's build tree (tree/build is configured)
+  // A fresh folder for the renderer's images, outside the tree: the sandbox
+  // user must be able to reach it (the tree is the grader's, mode 0700).
+  std::string renders_dir;
+  std::string configure_parts;     // PT_PARTS_SUBMITTED as configured ("1;3")
+  std::set<int> student_parts;     // the parts the renders take from the student
+  std::map<int, std::string> part_names;  // n -> "part n (tasks/partn_....cpp)"
+  double seconds = 60;             // builds and renders together
+  double build_seconds = 50;       // one renderer's build
+};
+
+// Fills page.renders and page.renders_note; notes for the instructor go to
+// *notes. Every render runs in `sandbox`.
+void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& sandbox, HtmlReport& page,
+                    std::vector<std::string>* notes);
+
+}  // namespace pt::grade

@@ -1,0 +1,32 @@
+# ctest framework:layers — the skeleton's folders are layers, each built only on
+# the ones below it (skeleton/README.md draws them):
+#   core < geometry < scene < render < io < app
+# A file may include its own layer and any layer below, never one above.
+# Usage: cmake -DSKELETON=<skeleton dir> -P check_layers.cmake
+set(layers core geometry scene render io app)
+set(violations "")
+list(LENGTH layers n)
+math(EXPR last "${n} - 1")
+foreach(i RANGE ${last})
+  list(GET layers ${i} layer)
+  file(GLOB files ${SKELETON}/${layer}/*.h ${SKELETON}/${layer}/*.cpp)
+  foreach(f IN LISTS files)
+    file(STRINGS ${f} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[a-z_]+/")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^[^\"]*\"([a-z_]+)/.*" "\\1" target "${line}")
+      list(FIND layers ${target} j)
+      if(j GREATER i)
+        file(RELATIVE_PATH rel ${SKELETON} ${f})
+        list(APPEND violations "${rel}: includes ${target}/, a layer above ${layer}/")
+      elseif(j EQUAL -1)
+        file(RELATIVE_PATH rel ${SKELETON} ${f})
+        list(APPEND violations "${rel}: includes ${target}/, which is not a layer of the skeleton")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(violations)
+  list(JOIN violations "\n  " text)
+  message(FATAL_ERROR "The skeleton's layers are crossed (core < geometry < scene < render < io < app):\n  ${text}")
+endif()
+message(STATUS "skeleton layers: no file includes a layer above its own")

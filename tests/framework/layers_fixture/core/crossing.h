@@ -1,0 +1,3 @@
+#pragma once
+// A planted crossing for framework:layers-catches (core may not include render/).
+#include "render/renderer.h"
