@@ -12,6 +12,9 @@
 //    measures the work of each query (see "Counting work" below).
 //  * framework_closest() is an ordered, pruned closest-hit traversal used as
 //    the yardstick for the student's traversal work, on the same tree.
+//  * child_order_violations() checks, from the leaves a query entered and
+//    their order, that a closest-hit traversal went into the nearer child
+//    (by entry distance) first.
 //
 // Structural invariants (check_structure):
 //  1. A root exists exactly when there are primitives.
