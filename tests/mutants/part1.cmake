@@ -334,3 +334,20 @@ pt_mutant(1 sph_no_q_zero_case ${p1} [[  if (q == 0.0) {
     return true;
   }
 ]] [[]])
+
+# The stable form with the wrong sign: q = -(b - sign(b) sqrt(disc)) / 2 is the
+# cancelling root, computed first. From an origin on the sphere heading in
+# (c = 0, sqrt(disc) = |b|) q is 0 and both roots come out 0: the exit is
+# lost; 1e-5 inside a sphere of radius 1e4 the exit c / q is off by 1e-4 to 7e-4.
+# Caught by SphereTest.OriginOnTheSphereHeadingIn (hidden).
+pt_mutant(1 sph_cancelling_root_first ${p1} [[double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));]]
+          [[double q = -0.5 * (b - std::copysign(std::sqrt(disc), b));]])
+
+# The same without the q = 0 case: on the sphere t2 = c / q = 0 / 0 is NaN.
+# Caught by SphereTest.OriginOnTheSphereHeadingIn (hidden),
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+pt_mutant(1 sph_cancelling_root_no_q_zero_case ${p1} [[double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  if (q == 0.0) {
+    t1 = t2 = 0.0;  // origin on the sphere, ray tangent to it
+    return true;
+  }]] [[double q = -0.5 * (b - std::copysign(std::sqrt(disc), b));]])

@@ -100,3 +100,15 @@ pt_mutant(5 own_rng ${p5} [[  auto next_sample = [&] {
     Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
   auto next_sample = [&] {
     Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : own.uniform2();]])
+
+# The Rec. 709 weights applied to the channels in B, G, R order.
+# Caught by SampleAdaptively.IlluminanceWeightsFitTheirChannels (hidden).
+pt_mutant(5 rec709_bgr_order ${p5} [[double il = illuminance(x);]]
+          [[double il = 0.2126 * x.b + 0.7152 * x.g + 0.0722 * x.r;]])
+
+# The weights shifted one channel along (red 0.7152, green 0.0722, blue
+# 0.2126): alternating red and blue alone cannot tell (T = 6.8, stops at 8).
+# Caught by SampleAdaptively.UsesRec709Illuminance (hidden),
+#   SampleAdaptively.IlluminanceWeightsFitTheirChannels (hidden).
+pt_mutant(5 rec709_weights_shifted ${p5} [[double il = illuminance(x);]]
+          [[double il = 0.7152 * x.r + 0.0722 * x.g + 0.2126 * x.b;]])

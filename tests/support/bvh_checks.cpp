@@ -283,9 +283,10 @@ void WorkMeter::attach(const FlatTree& tree) {
   mark_.assign(tree.nodes.size(), 0);
 }
 
-QueryWork WorkMeter::stop() const {
+QueryWork WorkMeter::stop(std::vector<int>* leaves_in_order) const {
   QueryWork w;
   ++stamp_;
+  if (leaves_in_order) leaves_in_order->clear();
   bool seen_hit = false;
   for (const TestEvent& e : log_) {
     ++w.primitive_tests;
@@ -294,6 +295,7 @@ QueryWork WorkMeter::stop() const {
     int leaf = tree_ && e.index < leaf_of_.size() ? leaf_of_[e.index] : -1;
     if (leaf < 0 || mark_[size_t(leaf)] == stamp_) continue;
     ++w.leaves;
+    if (leaves_in_order) leaves_in_order->push_back(leaf);
     for (int n = leaf; n >= 0 && mark_[size_t(n)] != stamp_; n = tree_->nodes[size_t(n)].parent) {
       mark_[size_t(n)] = stamp_;
       ++w.nodes;
@@ -331,11 +333,12 @@ CountedBVH::CountedBVH(const std::vector<const Primitive*>& prims, size_t max_le
 
 CountedBVH::~CountedBVH() = default;
 
-bool CountedBVH::closest(const Ray& r, Intersection* isect, QueryWork* work) const {
+bool CountedBVH::closest(const Ray& r, Intersection* isect, QueryWork* work,
+                         std::vector<int>* leaves_in_order) const {
   meter_.start();
   bool hit = bvh_->intersect(r, isect);
   isect->primitive = meter_.unwrap(isect->primitive);
-  QueryWork w = meter_.stop();
+  QueryWork w = meter_.stop(leaves_in_order);
   if (work) *work = w;
   return hit;
 }
@@ -355,6 +358,38 @@ bool CountedBVH::reference_closest(const Ray& r, Intersection* isect, QueryWork*
   QueryWork w = meter_.stop();
   if (work) *work = w;
   return hit;
+}
+
+// --- The order of a closest-hit traversal -------------------------------------------------
+
+std::vector<OrderViolation> child_order_violations(const FlatTree& tree, const Ray& r,
+                                                   const std::vector<int>& leaves_in_order, int* checked) {
+  // first[n]: the position in leaves_in_order of the first leaf entered below node n.
+  std::vector<int> first(tree.nodes.size(), -1);
+  for (size_t k = 0; k < leaves_in_order.size(); ++k)
+    for (int n = leaves_in_order[k]; n >= 0 && first[size_t(n)] < 0; n = tree.nodes[size_t(n)].parent)
+      first[size_t(n)] = int(k);
+  std::vector<OrderViolation> out;
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    const FlatNode& n = tree.nodes[i];
+    if (n.leaf() || n.left < 0 || n.right < 0 || first[size_t(n.left)] < 0 || first[size_t(n.right)] < 0) continue;
+    double tl0 = r.min_t, tl1 = r.max_t, tr0 = r.min_t, tr1 = r.max_t;
+    if (!slab_closed(tree.nodes[size_t(n.left)].bb, r, tl0, tl1) || !slab_closed(tree.nodes[size_t(n.right)].bb, r, tr0, tr1))
+      continue;  // (cannot happen for leaves that were entered; a box the ray misses has no order)
+    if (std::abs(tl0 - tr0) <= 1e-9 * std::max(1.0, std::max(std::abs(tl0), std::abs(tr0)))) continue;
+    if (checked) ++*checked;
+    bool left_went_first = first[size_t(n.left)] < first[size_t(n.right)];
+    bool left_nearer = tl0 < tr0;
+    if (left_went_first == left_nearer) continue;
+    OrderViolation v;
+    v.node = int(i);
+    v.went_first = left_went_first ? n.left : n.right;
+    v.nearer = left_nearer ? n.left : n.right;
+    v.went_first_t0 = left_went_first ? tl0 : tr0;
+    v.nearer_t0 = left_nearer ? tl0 : tr0;
+    out.push_back(v);
+  }
+  return out;
 }
 
 // --- Comparing hits --------------------------------------------------------------------

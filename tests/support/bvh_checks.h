@@ -12,6 +12,9 @@
 //    measures the work of each query (see "Counting work" below).
 //  * framework_closest() is an ordered, pruned closest-hit traversal used as
 //    the yardstick for the student's traversal work, on the same tree.
+//  * child_order_violations() checks, from the leaves a query entered and
+//    their order, that a closest-hit traversal went into the nearer child
+//    (by entry distance) first.
 //
 // Structural invariants (check_structure):
 //  1. A root exists exactly when there are primitives.
@@ -198,7 +201,9 @@ class WorkMeter {
   // Records which leaf of `tree` owns each wrapper (tree.prims are wrappers).
   void attach(const FlatTree& tree);
   void start() const { log_.clear(); }
-  QueryWork stop() const;
+  // The work of the query since start(); with `leaves_in_order`, also the
+  // leaves it entered, in the order of their first primitive test.
+  QueryWork stop(std::vector<int>* leaves_in_order = nullptr) const;
   const Primitive* unwrap(const Primitive* p) const;
 
  private:
@@ -228,7 +233,8 @@ class CountedBVH {
 
   // The student's closest hit on `r` (r.max_t shrinks as the contract says).
   // isect->primitive is reported as the original (unwrapped) primitive.
-  bool closest(const Ray& r, Intersection* isect, QueryWork* work = nullptr) const;
+  bool closest(const Ray& r, Intersection* isect, QueryWork* work = nullptr,
+               std::vector<int>* leaves_in_order = nullptr) const;
   // The student's any-hit query.
   bool any(const Ray& r, QueryWork* work = nullptr) const;
   // The framework's ordered, pruned traversal of the same tree.
@@ -240,6 +246,27 @@ class CountedBVH {
   std::unique_ptr<BVHAccel> bvh_;
   FlatTree tree_;
 };
+
+// --- The order of a closest-hit traversal -----------------------------------
+// A closest-hit traversal visits the child whose box the ray enters first
+// (the smaller entry t0 on [r.min_t, r.max_t]) before the other. A depth-first
+// traversal, recursive or with a stack, finishes the subtree of the child it
+// goes into before it starts the other's, so the first leaf entered below
+// the nearer child comes before the first leaf entered below the farther one.
+// child_order_violations() reads that off the leaves a query entered (in the
+// order of their first primitive test, WorkMeter::stop): every interior node
+// with leaves entered below both children whose boxes (as stored in the tree)
+// the ray enters more than 1e-9 (relative, at least 1e-9 absolute) apart is
+// checked (`checked`, if given, counts them); children entered at the same
+// distance may go in either order. A node whose farther child was pruned has
+// leaves below one child only and is not checked.
+struct OrderViolation {
+  int node = -1;
+  int went_first = -1, nearer = -1;  // child nodes: the one entered first by the query, the one the ray enters first
+  double went_first_t0 = 0.0, nearer_t0 = 0.0;  // where the ray enters their boxes
+};
+std::vector<OrderViolation> child_order_violations(const FlatTree& tree, const Ray& r,
+                                                   const std::vector<int>& leaves_in_order, int* checked = nullptr);
 
 // --- Comparing hits ----------------------------------------------------------
 // Whether a BVH closest-hit result matches the linear scan of the same ray

@@ -192,5 +192,85 @@ GRADED_TEST(SphereTest, TangentRayFromAPointOnTheSphere, "P1T4", 0.5, Hidden) {
   }
 }
 
+GRADED_TEST(SphereTest, OriginOnTheSphereHeadingIn, "P1T4", 0.5, Hidden) {
+  // A ray that starts on the sphere and heads into it (a ray leaving the
+  // surface inwards, or one started there by an epsilon too small to move
+  // it) has the roots 0 and the exit. The stable form takes the root whose
+  // terms do not cancel first: q = -(b + sign(b) sqrt(disc)) / 2. Written the
+  // other way round, q = -(b - sign(b) sqrt(disc)) / 2 is the CANCELLING
+  // root: here c = 0, so sqrt(disc) = |b| and that q is exactly 0, both roots
+  // come out 0 (or c / q = 0 / 0 = NaN) and the exit is lost.
+  // (a) Origins exactly on the sphere (|o - c| = r in small dyadic numbers,
+  //     so c = 0 exactly in every formulation): test() gives t1 = 0 and
+  //     t2 = -b / a = -2 (o - c).d / (d.d); with min_t = 1e-5 the hit is the
+  //     exit (outward normal), with min_t = 0 it is t = 0. Tolerance 1e-12
+  //     relative: the textbook formula and the stable form are exact here.
+  struct OnSphere {
+    Vec3 centre;
+    double radius;
+    Vec3 offset, d;  // origin = centre + offset, |offset| = radius
+  };
+  const OnSphere on[] = {{{1, 2, 3}, 2.0, {2, 0, 0}, {-3, 1, 2}},
+                         {{0, 0, 0}, 5.0, {3, 4, 0}, {-1, -2, 0.5}},
+                         {{-1, 0.5, 2}, 0.625, {0, 0.375, -0.5}, {0.25, -1, 1}},
+                         {{0, 0, -1e4}, 1e4, {6e3, 0, 8e3}, {-0.6, 0.1, -0.8}}};
+  for (const OnSphere& c : on) {
+    Sphere s(c.centre, c.radius, &g_bsdf);
+    Ray r(c.centre + c.offset, c.d);
+    const std::string ctx = context(s, r);
+    const double exit = -2.0 * glm::dot(c.offset, c.d) / glm::dot(c.d, c.d);
+    std::ostringstream why = stream15();
+    why << "The origin is on the sphere (|o - c| = r exactly, so c = |o - c|^2 - r^2 = 0) and the ray heads "
+           "into it: the roots are 0 and the exit "
+        << exit
+        << ". In the stable form q = -(b + sign(b) sqrt(disc)) / 2 (sign(b) with a plus: the terms that do not "
+           "cancel); with a minus q is 0 here and the exit is lost.\n"
+        << ctx;
+    double t1 = -1, t2 = -1;
+    ASSERT_TRUE(s.test(r, t1, t2)) << "test() found no roots. " << why.str();
+    EXPECT_TRUE(Near("t1", t1, 0.0, 1e-12 * c.radius)) << "\n" << why.str();
+    EXPECT_TRUE(Near("t2", t2, exit, 1e-12 * exit)) << "\n" << why.str();
+    Ray offset = r;
+    offset.min_t = 1e-5;
+    EXPECT_TRUE(s.has_intersection(offset)) << "has_intersection with min_t = 1e-5 missed. " << why.str();
+    Intersection isect;
+    ASSERT_TRUE(s.intersect(offset, &isect)) << "intersect with min_t = 1e-5 missed. " << why.str();
+    EXPECT_TRUE(Near("isect.t", isect.t, exit, 1e-12 * exit)) << "\n" << why.str();
+    EXPECT_TRUE(VecNear("isect.n", isect.n, (r.at(exit) - c.centre) / c.radius, 1e-9)) << "\n" << why.str();
+    Ray from_zero = r;
+    Intersection at_origin;
+    ASSERT_TRUE(s.intersect(from_zero, &at_origin)) << "intersect with min_t = 0 missed (t = 0 is a root). "
+                                                    << why.str();
+    EXPECT_TRUE(Near("isect.t", at_origin.t, 0.0, 1e-12 * c.radius)) << "\n" << why.str();
+  }
+  // (b) A sphere of radius 1e4 (a floor modelled as a sphere), the
+  //     origin 1e-5 inside its surface, heading in along the inward normal
+  //     and 60 degrees off it: the near root is about -1e-5, the hit is the
+  //     exit, (r - e) cos + sqrt((r - (r - e) sin) (r + (r - e) sin)) with
+  //     e = 1e-5 (factored so that the closed form itself does not cancel).
+  //     Measured errors of the exit: the textbook formula and the stable form
+  //     3.2e-12 or less; the cancelling root first 6.8e-4 and 1.0e-4. Tolerance
+  //     1e-5 (1e-9 of the radius): 3000x above the first, 10x below the second.
+  const double R = 1e4, e = 1e-5;
+  Sphere big(Vec3(0, 0, 0), R, &g_bsdf);  // centred at the origin: o - c is o, exactly
+  for (double angle : {0.0, 60.0}) {
+    const double cs = std::cos(glm::radians(angle)), sn = std::sin(glm::radians(angle));
+    Ray r(Vec3(0, 0, R - e), Vec3(0, sn, -cs));  // the inward normal is -z
+    const double exit = (R - e) * cs + std::sqrt((R - (R - e) * sn) * (R + (R - e) * sn));
+    std::ostringstream why = stream15();
+    why << "The origin is " << e << " inside the surface of a sphere of radius " << R << ", the ray " << angle
+        << " degrees off the inward normal: the hit is the exit at t = " << exit
+        << ", tolerance 1e-5 (a correct formulation is within 4e-12; computing the cancelling root first, "
+           "q = -(b - sign(b) sqrt(disc)) / 2, and the exit as c / q loses it).\n"
+        << context(big, r);
+    Intersection isect;
+    ASSERT_TRUE(big.intersect(r, &isect)) << "intersect missed. " << why.str();
+    EXPECT_TRUE(Near("isect.t", isect.t, exit, 1e-9 * R)) << "\n" << why.str();
+    double t1 = 0, t2 = 0;
+    ASSERT_TRUE(big.test(Ray(r.o, r.d), t1, t2)) << "test() found no roots. " << why.str();
+    EXPECT_TRUE(Near("t2", t2, exit, 1e-9 * R)) << "\n" << why.str();
+  }
+}
+
 }  // namespace
 }  // namespace pt::test::p1

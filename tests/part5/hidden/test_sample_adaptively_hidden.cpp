@@ -40,6 +40,29 @@ GRADED_TEST(SampleAdaptively, UsesRec709Illuminance, "P5T1", 0.5, Hidden) {
                   "illuminance alternates 0.6378, 2.1456: T = 451, more than the cap of 64");
 }
 
+GRADED_TEST(SampleAdaptively, IlluminanceWeightsFitTheirChannels, "P5T1", 0.5, Hidden) {
+  // Each Rec. 709 weight belongs to its own channel: 0.2126 to red, 0.7152 to
+  // green, 0.0722 to blue. Colours that differ in two channels only,
+  // (1 / 0.2126, 0, 0), (0, 1 / 0.7152, 0) and (0, 0, 1 / 0.0722), all have
+  // illuminance 1, so alternating any two of them is a constant pixel for the
+  // rule: one batch (8). With the weights on the wrong channels (the five
+  // other assignments: B, G, R order, red and green swapped, ...) the
+  // alternating values are w'_i / w_i and w'_j / w_j. With tol = 0.05,
+  // T = (1.96 (sp / mu) / tol)^2 (stop at the first checked n with n - 1 >= T)
+  // is, per assignment, at least 373 on two of the three pairs (and 6.8 on
+  // the third for the two cyclic shifts, which is why one pair is not
+  // enough: red against blue alone lets (0.7152, 0.0722, 0.2126) stop at 8),
+  // so each wrong assignment runs a pair to the cap of 64. Boundary: the
+  // stopping count, 8 against 64, exact.
+  const Spectrum red(1.0 / 0.2126, 0, 0), green(0, 1.0 / 0.7152, 0), blue(0, 0, 1.0 / 0.0722);
+  const char* why =
+      "both colours have illuminance 1 (0.2126 r + 0.7152 g + 0.0722 b): zero variance; weights applied to the "
+      "wrong channels make the two differ and the pixel run to the cap";
+  EXPECT_STOPS_AT(alternating(red, blue), 64, 8, 0.05, 8, why);
+  EXPECT_STOPS_AT(alternating(red, green), 64, 8, 0.05, 8, why);
+  EXPECT_STOPS_AT(alternating(green, blue), 64, 8, 0.05, 8, why);
+}
+
 GRADED_TEST(SampleAdaptively, ToleranceIsRelativeToTheMean, "P5T1", 0.5, Hidden) {
   // Scaling every sample by s scales mu and sigma alike, so T is unchanged:
   // alternating 30, 10 and 0.03, 0.01 (sp / mu = 0.5 as for 3, 1) both stop at
