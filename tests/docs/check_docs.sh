@@ -34,8 +34,8 @@ for doc in "$@"; do
       skeleton/*|tasks/*|reference/*|tests/*|autograder/*|tools/*|scenes/*|handouts/*|docs/*)
         path=${t%%:*} line=""
         [[ "$t" =~ :([0-9]+)$ ]] && line=${BASH_REMATCH[1]}
-        if [ -e "$src/$(dirname "$doc")/$path" ] && [ ! -e "$src/$path" ]; then
-          path="$(dirname "$doc")/$path"  # relative to the document's own folder
+        if [ ! -e "$src/$path" ] && [ -e "$src/${doc%/*}/$path" ]; then
+          path="${doc%/*}/$path"  # relative to the document's own folder
         fi
         if [ ! -e "$src/$path" ]; then
           fail "$doc" "names $path, which does not exist"
@@ -44,8 +44,9 @@ for doc in "$@"; do
         fi ;;
     esac
   done <<< "$tokens"
-  # Targets, presets and ctest selections, from the code lines.
+  # Targets, presets and ctest selections, from the code lines that have any.
   while IFS= read -r line; do
+    [ -n "$line" ] || continue
     for t in $(grep -o -- '--target [A-Za-z0-9_.-]*' <<< "$line" | cut -d' ' -f2); do
       grep -qx -- "$t" <<< "$targets" || fail "$doc" "names the build target $t, which does not exist"
     done
@@ -59,7 +60,7 @@ for doc in "$@"; do
         [ "${n:-0}" -gt 0 ] || fail "$doc" "ctest $flag $value selects no test"
       done
     fi
-  done <<< "$code"
+  done < <(grep -E -- '--target |--preset |ctest' <<< "$code")
 done
 if [ "$failures" -gt 0 ]; then
   echo "FAILED: $failures name(s) in the documents do not exist"
