@@ -36,24 +36,19 @@ constexpr uint32_t kPilotPass = 1, kRestPass = 2;
 
 int pilot_samples(int budget) { return std::clamp(budget / 8, 2, 8); }
 
-std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int width, int height) {
-  std::vector<double> r(pilot.size(), 0.0);
+std::vector<double> pooled_relative_sd(const std::vector<PixelMoments>& pixels, int width, int height) {
+  std::vector<double> r(pixels.size(), 0.0);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      double var[3] = {0, 0, 0}, mean_sq[3] = {0, 0, 0};
+      Spectrum var(0.0), mean_sq(0.0);
       int used = 0;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int qx = x + dx, qy = y + dy;
           if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
-          const PixelSums& q = pilot[size_t(qy) * width + qx];
-          if (!q.finite || q.n < 2) continue;
-          for (int c = 0; c < 3; ++c) {
-            const double m = q.sum[c] / q.n;
-            var[c] += std::max(0.0, (q.sum_sq[c] - q.n * m * m) / (q.n - 1));
-            mean_sq[c] += m * m;
-          }
-          ++used;
+          const PixelMoments& q = pixels[size_t(qy) * width + qx];
+          if (!q.usable) continue;
+          var += q.var, mean_sq += q.mean * q.mean, ++used;
         }
       if (used == 0) continue;
       double v = 0;
@@ -61,6 +56,18 @@ std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int 
       r[size_t(y) * width + x] = std::sqrt(v);
     }
   return r;
+}
+
+std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int width, int height) {
+  std::vector<PixelMoments> m(pilot.size());
+  for (size_t i = 0; i < pilot.size(); ++i) {
+    const PixelSums& q = pilot[i];
+    if (!q.finite || q.n < 2) continue;
+    m[i].mean = q.sum / double(q.n);
+    m[i].var = glm::max(Spectrum(0.0), (q.sum_sq - double(q.n) * m[i].mean * m[i].mean) / double(q.n - 1));
+    m[i].usable = true;
+  }
+  return pooled_relative_sd(m, width, height);
 }
 
 std::vector<int> allocate_counts(const std::vector<double>& r, long long total, int floor, int cap) {

@@ -45,6 +45,15 @@ struct PixelSums {
 // least two finite samples. eps is relMSE's 1e-2. 0 where no neighbour qualifies.
 std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int width, int height);
 
+// The same rule on known moments (pt-study feeds it the true variances to
+// measure what the pilot's noise costs): per pixel, the mean and per-sample
+// variance of each channel, and whether to pool it at all.
+struct PixelMoments {
+  Spectrum mean{0.0}, var{0.0};
+  bool usable = false;
+};
+std::vector<double> pooled_relative_sd(const std::vector<PixelMoments>& pixels, int width, int height);
+
 // Integer counts, one per pixel, summing exactly to `total`: n_p = clamp(lambda
 // r_p, floor, cap) with lambda chosen to spend `total` (water-filling), rounded
 // down and the remainder given one each to the largest fractional parts (ties

@@ -235,9 +235,11 @@ void check_allocation(const Csv& c) {
       if (!(ratio - 3 * se <= bound))
         fail("allocation.csv: the budgeted allocator's savings on " + s + ", " + std::to_string(ratio) + " ± " + std::to_string(se) + ", beat the bound " + std::to_string(bound) + " by more than 3 standard errors");
     }
-    // Unbiased by construction (render/budget.h): its energy within 4 standard errors of the reference's.
-    if (!(std::abs(c.num(b, "energy_bias")) <= 4 * c.num(b, "energy_bias_se")))
-      fail("allocation.csv: the budgeted allocator's energy bias on " + s + ", " + c.text(b, "energy_bias") + ", is more than 4 standard errors (" + c.text(b, "energy_bias_se") + ") from zero");
+    // The bias is reported, not judged here: with --quick's 4 seeds its
+    // standard error has 3 degrees of freedom, too few for a test that
+    // must not fail a correct run (test_budget.cpp tests it with known variances).
+    if (!std::isfinite(c.num(b, "energy_bias")) || !std::isfinite(c.num(b, "energy_bias_se")))
+      fail("allocation.csv: no energy bias for the budgeted allocator on " + s);
   }
 }
 

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "study.h"
+#include "render/budget.h"
 #include "support/reference_image.h"
 
 namespace pt::study {
@@ -29,7 +30,27 @@ constexpr double kEps = 1e-2;  // relMSE's offset
 struct Stored {
   Reference ref;
   double bound = kNaN, a = kNaN;  // E[r^2]/E[r]^2; E[r^2] (fixed sampling's relMSE times n)
+  std::vector<double> r2;                          // per pixel, row 0 at the top
+  std::vector<Spectrum> mean, var;                 // per pixel: the mean and per-sample variance
 };
+
+// Expected savings (fixed sampling's expected relMSE over the allocation's)
+// of the counts allocate_counts gives for weights w at `budget` spp with the
+// allocator's pilot as the floor: no rendering, the stored r^2 as the truth.
+double expected_savings(const Stored& st, const std::vector<double>& w, int budget) {
+  const std::vector<int> n = allocate_counts(w, (long long)budget * (long long)w.size(), pilot_samples(budget), 1 << 20);
+  double alloc = 0;
+  for (size_t i = 0; i < n.size(); ++i) alloc += st.r2[i] / n[i];
+  return st.a / budget / (alloc / double(n.size()));
+}
+
+// The allocator's own rule (render/budget.h: r pooled over the 3x3
+// neighbours, the pixel itself left out) fed the true variances.
+std::vector<double> neighbour_pooled(const Stored& st, int width, int height) {
+  std::vector<PixelMoments> m(st.r2.size());
+  for (size_t i = 0; i < m.size(); ++i) m[i] = {st.mean[i], st.var[i], true};
+  return pooled_relative_sd(m, width, height);
+}
 
 Stored stored_reference(const Options& opt, const StudyScene& s) {
   const library::Library lib = library::load_library(library::default_manifest(), PT_GENERATED_SCENES_DIR);
@@ -58,13 +79,16 @@ Stored stored_reference(const Options& opt, const StudyScene& s) {
         }
       st.ref.image.pixels[size_t(y) * opt.width + x] = mean;
       double r2 = 0, sd_lum = 0;
+      Spectrum variance(0.0);
       for (int c = 0; c < 3; ++c) {
         const double var = std::max(0.0, second[c] - mean[c] * mean[c]);
+        variance[c] = var;
         r2 += var / (mean[c] * mean[c] + kEps) / 3;
         own += mean_var[c] / (mean[c] * mean[c] + kEps) / 3;
         sd_lum += lum[c] * std::sqrt(mean_var[c]);  // channels taken as fully correlated: an upper bound
       }
       r2_sum += r2, r_sum += std::sqrt(r2), energy_var += sd_lum * sd_lum;
+      st.r2.push_back(r2), st.mean.push_back(mean), st.var.push_back(variance);
     }
   const double p = double(opt.width) * opt.height;
   st.a = r2_sum / p;
@@ -134,6 +158,13 @@ Experiment run_allocation(const Options& study_opt) {
     const StudyScene s = load_study_scene(entry.name);
     const Stored st = stored_reference(opt, s);
     const RenderSettings base = s.settings(opt);
+    // Where the allocator's savings are lost: the same rule with the true
+    // variances (pooling and floor, no pilot noise), and n ∝ the true r with
+    // the same floor (no pooling, no noise).
+    std::vector<double> own_r(st.r2.size());
+    for (size_t i = 0; i < own_r.size(); ++i) own_r[i] = std::sqrt(st.r2[i]);
+    const double exact_pooled = expected_savings(st, neighbour_pooled(st, opt.width, opt.height), budget);
+    const double exact_own = expected_savings(st, own_r, budget);
     scenes += (scenes.empty() ? "" : ", ") + entry.name;
     names.push_back(entry.name);
     auto row = [&](const std::string& method, const std::string& param, double value, const Measurement& m) {
@@ -179,16 +210,20 @@ Experiment run_allocation(const Options& study_opt) {
     e.headline.push_back({n + "budget_savings", pm(bs, bs_se, "×")});
     e.headline.push_back({n + "budget_share_of_bound", pm(100 * bs / st.bound, 100 * bs_se / st.bound, "%")});
     e.headline.push_back({n + "course_rule_savings", pm(cs, cs_se, "×")});
+    e.headline.push_back({n + "exact_r_savings", fmt("%.3f", exact_own)});
+    e.headline.push_back({n + "exact_pooled_r_savings", fmt("%.3f", exact_pooled)});
     e.headline.push_back({n + "fixed_bias", pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%")});
     e.headline.push_back({n + "budget_bias", pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%")});
     e.headline.push_back({n + "course_rule_bias", pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%")});
+    std::fprintf(stderr, "  %s: with exact r %.3f, exact pooled r %.3f\n", entry.name.c_str(), exact_own, exact_pooled);
     std::fprintf(stderr, "  %s: bound %.3f, budget %s (%.0f%% of the bound), course rule %s at %.1f spp; bias fixed %s, budget %s, rule %s\n",
                  entry.name.c_str(), st.bound, pm(bs, bs_se, "x").c_str(), 100 * bs / st.bound, pm(cs, cs_se, "x").c_str(),
                  cm.samples, pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%").c_str(),
                  pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%").c_str(),
                  pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%").c_str());
     para += "<li>" + entry.name + ": bound " + fmt("%.3f", st.bound) + "×; the budgeted allocator " + pm(bs, bs_se, "×") +
-            " (" + pm(100 * bs / st.bound, 100 * bs_se / st.bound, "%") + " of the bound), bias " +
+            " (" + pm(100 * bs / st.bound, 100 * bs_se / st.bound, "%") + " of the bound; its rule with the true variances would reach " +
+            fmt("%.3f", exact_pooled) + "×, and n ∝ the true r with the same floor " + fmt("%.3f", exact_own) + "×), bias " +
             pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%") + "; the course's rule " + pm(cs, cs_se, "×") +
             " at " + fmt("%.1f", cm.samples) + " spp, bias " + pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%") +
             "; fixed sampling's bias " + pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%") + "</li>";
