@@ -37,23 +37,28 @@ constexpr uint32_t kPilotPass = 1, kRestPass = 2;
 int pilot_samples(int budget) { return std::clamp(budget / 8, 2, 8); }
 
 std::vector<double> pooled_relative_sd(const std::vector<PixelMoments>& pixels, int width, int height) {
+  // The four lines through p: the two neighbours on each side of it.
+  constexpr int kLines[4][2][2] = {{{-1, 0}, {1, 0}}, {{0, -1}, {0, 1}}, {{-1, -1}, {1, 1}}, {{-1, 1}, {1, -1}}};
   std::vector<double> r(pixels.size(), 0.0);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      Spectrum var(0.0), mean_sq(0.0);
-      int used = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int qx = x + dx, qy = y + dy;
-          if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
+      double best = 0;
+      for (const auto& line : kLines) {
+        Spectrum var(0.0), mean_sq(0.0);
+        int used = 0;
+        for (const auto& d : line) {
+          const int qx = x + d[0], qy = y + d[1];
+          if (qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
           const PixelMoments& q = pixels[size_t(qy) * width + qx];
           if (!q.usable) continue;
           var += q.var, mean_sq += q.mean * q.mean, ++used;
         }
-      if (used == 0) continue;
-      double v = 0;
-      for (int c = 0; c < 3; ++c) v += var[c] / (mean_sq[c] + used * kRelEpsilon) / 3;
-      r[size_t(y) * width + x] = std::sqrt(v);
+        if (used == 0) continue;
+        double v = 0;
+        for (int c = 0; c < 3; ++c) v += var[c] / (mean_sq[c] + used * kRelEpsilon) / 3;
+        best = std::max(best, v);
+      }
+      r[size_t(y) * width + x] = std::sqrt(best);
     }
   return r;
 }

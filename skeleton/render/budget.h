@@ -18,9 +18,8 @@
 // the pilot instead of being re-estimated between rounds: a neighbour's later
 // samples are as many as this pixel's pilot made them, so a re-estimate from
 // them would let the pixel's own values back into its count. The price of
-// leaving the pixel out: a thin noisy feature (an edge one pixel wide) is
-// seen only through its neighbours, so its samples spread over a band three
-// pixels wide.
+// leaving the pixel out: a noisy feature is seen only through its
+// neighbours, so its samples spread over the pixels around it.
 #include <vector>
 
 #include "render/renderer.h"
@@ -39,10 +38,14 @@ struct PixelSums {
   bool finite = true;  // false when a sample was NaN or infinite
 };
 
-// r_p, pooled: sqrt of the mean over channels of (sum of the neighbours'
-// sample variances) / (sum of their squared means + eps), over the 3x3
-// neighbours of p in the image, p itself excluded (see above), each with at
-// least two finite samples. eps is relMSE's 1e-2. 0 where no neighbour qualifies.
+// r_p, pooled from p's neighbours, p itself left out (see above): for each
+// of the four lines through p (horizontal, vertical, two diagonals), the
+// mean over channels of the two neighbours' summed sample variances over
+// their summed squared means + eps (relMSE's 1e-2), and r_p^2 the largest of
+// the four. A noisy edge one pixel wide lies along one of them, so its pixels
+// still see it in full (averaged over all eight neighbours, it would be a
+// quarter of it), and the pixels beside it see half. Pixels without two
+// finite samples are left out; r_p = 0 where no line has any.
 std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int width, int height);
 
 // The same rule on known moments (pt-study feeds it the true variances to

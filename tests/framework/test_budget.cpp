@@ -62,27 +62,42 @@ PixelSums pixel(std::vector<Spectrum> samples) {
 
 // 3 x 3 pixels, constant 1 except the centre (samples 0 and 2: mean 1,
 // variance 2). The centre's own noise must not enter its estimate (that would
-// tie its count to its own values): its neighbours are constant, so r = 0. A
-// corner pools its three neighbours: variance 2 / (3 squared means of 1 + 3
-// eps), in every channel; an edge pixel its five.
+// tie its count to its own values): every line through it is constant, so
+// r = 0. A corner and an edge pixel each have one line through the centre
+// whose other end is outside the image: variance 2 / (1 + eps), the largest
+// of their lines.
 TEST(BudgetPooling, LeavesThePixelItselfOut) {
   std::vector<PixelSums> pilot(9, pixel({Spectrum(1.0), Spectrum(1.0)}));
   pilot[4] = pixel({Spectrum(0.0), Spectrum(2.0)});
   const std::vector<double> r = pooled_relative_sd(pilot, 3, 3);
   EXPECT_EQ(r[4], 0.0);
-  EXPECT_NEAR(r[0], std::sqrt(2.0 / 3.03), 1e-12);
-  EXPECT_NEAR(r[1], std::sqrt(2.0 / 5.05), 1e-12);
+  EXPECT_NEAR(r[0], std::sqrt(2.0 / 1.01), 1e-12);
+  EXPECT_NEAR(r[1], std::sqrt(2.0 / 1.01), 1e-12);
+}
+
+// A line whose two ends are both noisy outweighs one with a single noisy end:
+// a row of noisy pixels (an edge) sees itself in full. 3 x 3, the middle row
+// noisy (samples 0 and 2), the rest constant 1. The middle row's centre: its
+// horizontal line pools two noisy neighbours, 2 x 2 / (2 x 1 + 2 eps). The
+// top row's centre: at best one noisy end, 2 / (1 + eps) (its vertical line
+// reaches outside the image).
+TEST(BudgetPooling, AnEdgeSeesItselfAlongItsLine) {
+  std::vector<PixelSums> pilot(9, pixel({Spectrum(1.0), Spectrum(1.0)}));
+  for (int i = 3; i < 6; ++i) pilot[i] = pixel({Spectrum(0.0), Spectrum(2.0)});
+  const std::vector<double> r = pooled_relative_sd(pilot, 3, 3);
+  EXPECT_NEAR(r[4], std::sqrt(4.0 / 2.02), 1e-12);
+  EXPECT_NEAR(r[1], std::sqrt(2.0 / 1.01), 1e-12);
 }
 
 // A pixel with a NaN sample is left out of its neighbours' pools, not spread
-// around. Finite pixels: samples 1 and 3 (mean 2, variance 2).
+// around. Finite pixels: samples 1 and 3 (mean 2, variance 2); pixel 0's
+// diagonal line ends at the NaN pixel and outside the image, so it has none.
 TEST(BudgetPooling, SkipsNonFinitePixels) {
   std::vector<PixelSums> pilot(4, pixel({Spectrum(1.0), Spectrum(3.0)}));
   pilot[3] = pixel({Spectrum(std::nan("")), Spectrum(1.0)});
   pilot[3].finite = false;
   const std::vector<double> r = pooled_relative_sd(pilot, 2, 2);
-  EXPECT_NEAR(r[0], std::sqrt(4 / (8 + 0.02)), 1e-12);  // its two finite neighbours
-  EXPECT_NEAR(r[3], std::sqrt(6 / (12 + 0.03)), 1e-12);  // its three neighbours
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(r[i], std::sqrt(2 / 4.01), 1e-12) << "pixel " << i;
 }
 
 RenderSettings budget_settings(int budget) {
@@ -170,13 +185,13 @@ Bias image_bias(const RenderResult& r, int width) {
 
 // Unbiased: every pixel's count comes from its neighbours' pilot samples, so
 // the mean of its own samples stays unbiased. Two-sided z test at alpha =
-// 1e-5 (|z| < 4.42); 96 x 64 pixels at 16 samples each give the image mean a
-// standard error of 0.35%. The same statistic on the course's stopping rule
+// 1e-5 (|z| < 4.42); 96 x 64 pixels at 64 samples each give the image mean a
+// standard error of about 0.2%. The same statistic on the course's stopping rule
 // (-a 4 0.05, which stops a pixel on four zeros, mu = 0) must see its bias:
 // the control that the test can fail.
 TEST(BudgetRender, UnbiasedWhereTheStoppingRuleIsNot) {
   Scene scene = test::make_cornell_box();
-  RenderSettings s = budget_settings(16);
+  RenderSettings s = budget_settings(64);  // a pilot of 8: 16 samples per line of neighbours
   s.width = 96, s.height = 64;
   const double z_crit = 4.42;  // normal_quantile(1 - 1e-5 / 2)
   EXPECT_NEAR(stats::normal_quantile(1 - 0.5e-5), z_crit, 0.01);
@@ -186,7 +201,8 @@ TEST(BudgetRender, UnbiasedWhereTheStoppingRuleIsNot) {
   EXPECT_LT(std::abs(b.z), z_crit) << "image mean off by " << b.z << " standard errors (left " << b.mean_left
                                    << ", right " << b.mean_right << ")";
   // The right half is sqrt(3) times as noisy: it gets more samples (loosely:
-  // the pilot's pooled estimate is noisy and the halves' border is blurred).
+  // the pilot's pooled estimate is noisy, the largest of four lines favours
+  // the noisier estimate, and the halves' border is blurred).
   EXPECT_GT(b.counts_right, 1.3 * b.counts_left) << "left " << b.counts_left << ", right " << b.counts_right;
 
   RenderSettings rule = s;
