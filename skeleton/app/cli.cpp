@@ -164,7 +164,9 @@ int run_cli(int argc, char** argv) {
 
   std::fprintf(stderr, "%s: %zu primitives (%zu triangles), %zu lights; %dx%d, %d spp%s, %d light samples, depth %d, %d threads\n",
                scene_path.c_str(), scene.primitives.size(), scene.triangle_count(), scene.lights.size(), s.width,
-               s.height, s.ns_aa, s.adaptive ? " (adaptive cap)" : s.adaptive_budget > 0 ? " (adaptive budget)" : "", s.ns_area_light, s.max_ray_depth, threads);
+               s.height, s.adaptive_budget > 0 ? s.adaptive_budget : s.ns_aa,
+               s.adaptive ? " (adaptive cap)" : s.adaptive_budget > 0 ? " on average (adaptive budget; -s unused)" : "",
+               s.ns_area_light, s.max_ray_depth, threads);
   PathTracer tracer(scene, s);
   RenderResult result;
   try {
