@@ -162,7 +162,9 @@ RenderResult render_budgeted(const PathTracer& tracer, int threads, const Progre
     result.image.pixels[i] = finite ? mean : Spectrum(0.0);
     return finite;
   };
-  for_each_pixel(s.width, s.height, threads, rest_pixel, tiles_done(1), result);
+  // 4 x 4 tiles: the counts gather in a few places, and 16 x 16 tiles left
+  // one thread with the last heavy tile while the other idled.
+  for_each_pixel(s.width, s.height, threads, rest_pixel, tiles_done(1), result, 4);
   result.seconds = elapsed();
   return result;
 }

@@ -11,12 +11,9 @@
 
 namespace pt {
 
-namespace {
-constexpr int kTile = 16;
-}
-
 void for_each_pixel(int width, int height, int threads, const std::function<bool(int, int, size_t)>& pixel,
-                    const std::function<void(int, int)>& tile_done, RenderResult& result) {
+                    const std::function<void(int, int)>& tile_done, RenderResult& result, int tile) {
+  const int kTile = std::max(1, tile);
   // Within the limits, neither the tile counts nor their product overflow.
   const int tiles_x = width / kTile + (width % kTile != 0), tiles_y = height / kTile + (height % kTile != 0);
   const int tiles = tiles_x * tiles_y;

@@ -15,7 +15,9 @@ namespace pt {
 // called under a lock as tiles finish. The first exception ends the loop and
 // its message goes to result.error; work counters and thread count are added
 // to result.
+// `tile` is the side of a tile in pixels: small tiles balance the threads
+// when the work per pixel is very uneven (the budgeted sampler's counts).
 void for_each_pixel(int width, int height, int threads, const std::function<bool(int, int, size_t)>& pixel,
-                    const std::function<void(int, int)>& tile_done, RenderResult& result);
+                    const std::function<void(int, int)>& tile_done, RenderResult& result, int tile = 16);
 
 }  // namespace pt
