@@ -1,6 +1,6 @@
 #pragma once
 // Budgeted adaptive sampling (--adaptive-budget SPP, handouts/part5.md
-// section "The best allocation"): framework code, not a student task.
+// section 9, "How far from the best allocation"): framework code, not a student task.
 //
 // For a fixed total of samples, the expected relMSE sum_p v_p / n_p (v_p the
 // relative variance of one sample of pixel p) is smallest with n_p ∝ r_p =
@@ -27,8 +27,9 @@
 namespace pt {
 
 // Pilot samples per pixel for a mean budget of `budget` samples per pixel:
-// an eighth of it, at least 2 (a variance needs two) and at most 8 (pooled
-// over 8 neighbours, 64 samples per estimate). The pilot is averaged too.
+// an eighth of it, at least 2 (a variance needs two) and at most 8 (16
+// samples on each line of two neighbours, 64 around the pixel). The pilot is
+// averaged too.
 int pilot_samples(int budget);
 
 // Running sums of one pixel's samples, per channel.
