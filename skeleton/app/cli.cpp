@@ -108,6 +108,10 @@ int run_cli(int argc, char** argv) {
   app.add_option("-f,--file", output, "Output PNG; the EXR is written beside it");
   app.add_option("-r,--resolution", resolution, "Image width and height")->expected(2)->check(within(1, kMaxImageSide));
   app.add_option("-a,--adaptive", adaptive, "Adaptive sampling: samples per batch and max tolerance")->expected(2);
+  app.add_option("--adaptive-budget", s.adaptive_budget,
+                 "Budgeted adaptive sampling: this many samples per pixel on average, each pixel's share in "
+                 "proportion to its relative noise (a pilot pass estimates it); not with -a")
+      ->check(within(kMinAdaptiveBudget, kMaxSamples, "the pilot needs two samples"));
   app.add_flag("-H,--hemisphere", s.direct_hemisphere_sample, "Uniform hemisphere sampling for direct light");
   app.add_option("-o,--accumulate", accumulate, "1: sum all bounces; 0: only bounce number -m")
       ->check(CLI::IsMember({0, 1}));
@@ -129,13 +133,15 @@ int run_cli(int argc, char** argv) {
     s.max_tolerance = adaptive[1];
   }
   s.accumulate_bounces = accumulate != 0;
+  if (s.adaptive && s.adaptive_budget > 0) return bad_input("--adaptive-budget and -a are two different samplers: choose one");
   // What the options cannot check one by one (the pixel count).
   if (std::string why = check_render_limits(s, threads); !why.empty()) return bad_input(why);
 
   const std::string exr_path = stem_of(output) + ".exr", rate_path = stem_of(output) + "_rate.png";
   if (exr_path == output) return bad_input("-f names the PNG and the EXR goes beside it: -f " + stem_of(output) + ".png");
   std::vector<std::string> outputs = {output, exr_path};
-  if (s.adaptive) outputs.push_back(rate_path);
+  const bool rate_image = s.adaptive || s.adaptive_budget > 0;
+  if (rate_image) outputs.push_back(rate_path);
   for (const std::string& path : outputs)
     if (std::string why = check_writable(path); !why.empty() && !scene_info) return bad_input(why);
 
@@ -158,7 +164,9 @@ int run_cli(int argc, char** argv) {
 
   std::fprintf(stderr, "%s: %zu primitives (%zu triangles), %zu lights; %dx%d, %d spp%s, %d light samples, depth %d, %d threads\n",
                scene_path.c_str(), scene.primitives.size(), scene.triangle_count(), scene.lights.size(), s.width,
-               s.height, s.ns_aa, s.adaptive ? " (adaptive cap)" : "", s.ns_area_light, s.max_ray_depth, threads);
+               s.height, s.adaptive_budget > 0 ? s.adaptive_budget : s.ns_aa,
+               s.adaptive ? " (adaptive cap)" : s.adaptive_budget > 0 ? " on average (adaptive budget; -s unused)" : "",
+               s.ns_area_light, s.max_ray_depth, threads);
   PathTracer tracer(scene, s);
   RenderResult result;
   try {
@@ -174,12 +182,15 @@ int run_cli(int argc, char** argv) {
     return 1;
   }
 
+  // The rate image's red: the cap with -a, the largest count with a budget.
+  const auto& counts = result.sample_counts;
+  const int rate_cap = s.adaptive || counts.empty() ? s.ns_aa : *std::max_element(counts.begin(), counts.end());
   // Stops at the first file that cannot be written (the message names it);
   // "wrote" only once all are.
   try {
     write_png(output, result.image, exposure);
     write_exr(exr_path, result.image);
-    if (s.adaptive) write_png(rate_path, sample_rate_image(result.sample_counts, s.width, s.height, s.ns_aa));
+    if (rate_image) write_png(rate_path, sample_rate_image(result.sample_counts, s.width, s.height, rate_cap));
   } catch (const std::exception& e) {
     return bad_input(e.what());
   }
@@ -187,7 +198,7 @@ int run_cli(int argc, char** argv) {
   const WorkCounters& w = result.work;
   double rays = double(w.rays);
   std::fprintf(stderr, "wrote %s and %s%s\n", output.c_str(), exr_path.c_str(),
-               s.adaptive ? (" and " + rate_path).c_str() : "");
+               rate_image ? (" and " + rate_path).c_str() : "");
   // Primitive tests are counted by the framework for every BVH; node visits
   // only by a BVH that counts them itself (the reference does).
   char nodes[64] = "node visits not counted by this BVH";
@@ -195,10 +206,15 @@ int run_cli(int argc, char** argv) {
   std::fprintf(stderr, "rays traced: %llu  |  %.2f Mrays/s  |  %.1f intersection tests/ray  |  %s  |  time %s\n",
                (unsigned long long)w.rays, rays / std::max(result.seconds, 1e-9) / 1e6,
                rays > 0 ? w.primitive_tests / rays : 0.0, nodes, format_duration(result.seconds).c_str());
-  if (s.adaptive) {
+  if (rate_image) {
     double total = 0;
     for (int c : result.sample_counts) total += c;
-    std::fprintf(stderr, "adaptive: %.1f samples per pixel on average (cap %d)\n", total / result.sample_counts.size(), s.ns_aa);
+    if (s.adaptive)
+      std::fprintf(stderr, "adaptive: %.1f samples per pixel on average (cap %d)\n", total / result.sample_counts.size(), s.ns_aa);
+    else
+      std::fprintf(stderr, "adaptive budget: %.1f samples per pixel on average, %d at most, %d at least\n",
+                   total / result.sample_counts.size(), rate_cap,
+                   *std::min_element(result.sample_counts.begin(), result.sample_counts.end()));
   }
   if (result.nonfinite_pixels > 0)
     std::fprintf(stderr, "warning: %llu pixels had NaN or infinite radiance and were written as black\n",

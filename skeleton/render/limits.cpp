@@ -27,6 +27,10 @@ std::string check_render_limits(const RenderSettings& s, int threads) {
     return outside("maximum ray depth", s.max_ray_depth, 0, kMaxRayDepth);
   if (s.samples_per_batch < 1 || s.samples_per_batch > kMaxSamples)
     return outside("samples per batch", s.samples_per_batch, 1, kMaxSamples);
+  if (s.adaptive_budget != 0 && (s.adaptive_budget < kMinAdaptiveBudget || s.adaptive_budget > kMaxSamples))
+    return outside("adaptive budget (samples per pixel)", s.adaptive_budget, kMinAdaptiveBudget, kMaxSamples);
+  if (s.adaptive_budget != 0 && s.adaptive)
+    return "the adaptive budget and the adaptive stopping rule (-a) are two different samplers: choose one";
   if (threads < 1 || threads > kMaxThreads) return outside("threads", threads, 1, kMaxThreads);
   if (!(s.rr_continue_prob > 0.0 && s.rr_continue_prob <= 1.0))
     return "Russian roulette continuation probability " + std::to_string(s.rr_continue_prob) + " is not in (0, 1]";

@@ -24,6 +24,9 @@ constexpr long long kMaxPixels = 1LL << 25;
 constexpr int kMaxSamples = 1 << 20;
 constexpr int kMaxLightSamples = 1 << 10;
 
+// The budgeted sampler's pilot estimates a variance: two samples at least.
+constexpr int kMinAdaptiveBudget = 2;
+
 // Ray depth. The path estimator recurses once per bounce (the assignment's
 // design), so its depth is bounded by the stack. Measured in the closed box
 // with --rr 1 (every path runs to the maximum depth): the reference takes 545

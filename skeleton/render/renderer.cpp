@@ -1,19 +1,13 @@
 #include "render/renderer.h"
 
-#include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
 #include <string>
 
+#include "render/budget.h"
 #include "render/limits.h"
-#include "render/worker_threads.h"
+#include "render/tiles.h"
 
 namespace pt {
-
-namespace {
-constexpr int kTile = 16;
-}
 
 RenderResult render(const PathTracer& tracer, int threads, const ProgressFn& progress) {
   const RenderSettings& s = tracer.settings;
@@ -22,61 +16,23 @@ RenderResult render(const PathTracer& tracer, int threads, const ProgressFn& pro
     result.error = why;
     return result;
   }
+  if (s.adaptive_budget > 0) return render_budgeted(tracer, threads, progress);
   result.image = Image(s.width, s.height);  // may throw std::bad_alloc: the caller says how large
   result.sample_counts.assign(size_t(s.width) * s.height, 0);
-
-  // Within the limits, neither the tile counts nor their product overflow.
-  const int tiles_x = s.width / kTile + (s.width % kTile != 0), tiles_y = s.height / kTile + (s.height % kTile != 0);
-  const int tiles = tiles_x * tiles_y;
-  std::atomic<int> next_tile{0}, done_tiles{0};
-  std::atomic<bool> failed{false};
-  std::mutex mutex;  // guards result.work, result.error, nonfinite count and progress calls
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-
-  auto worker = [&] {
-    take_work_counters();
-    uint64_t nonfinite = 0;
-    try {
-      for (int t; !failed && (t = next_tile++) < tiles;) {
-        int x0 = (t % tiles_x) * kTile, y0 = (t / tiles_x) * kTile;
-        for (int y = y0; y < std::min(y0 + kTile, s.height); ++y)
-          for (int x = x0; x < std::min(x0 + kTile, s.width); ++x) {
-            Rng rng = Rng::for_pixel(s.seed, x, y);
-            PixelEstimate p = s.adaptive ? tracer.raytrace_pixel_adaptive(x, y, rng) : tracer.raytrace_pixel(x, y, rng);
-            if (!is_finite(p.radiance)) {
-              ++nonfinite;
-              p.radiance = Spectrum(0.0);
-            }
-            size_t row = size_t(s.height - 1 - y);  // pixel y counts from the bottom
-            result.image.pixels[row * s.width + x] = p.radiance;
-            result.sample_counts[row * s.width + x] = p.num_samples;
-          }
-        int d = ++done_tiles;
-        if (progress) {
-          std::lock_guard<std::mutex> lock(mutex);
-          progress(d, tiles, elapsed());
-        }
-      }
-    } catch (const std::exception& e) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (result.error.empty()) result.error = e.what();
-      failed = true;
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (result.error.empty()) result.error = "unknown exception";
-      failed = true;
-    }
-    std::lock_guard<std::mutex> lock(mutex);
-    result.work += take_work_counters();
-    result.nonfinite_pixels += nonfinite;
+  auto pixel = [&](int x, int y, size_t i) {
+    Rng rng = Rng::for_pixel(s.seed, x, y);
+    PixelEstimate p = s.adaptive ? tracer.raytrace_pixel_adaptive(x, y, rng) : tracer.raytrace_pixel(x, y, rng);
+    const bool finite = is_finite(p.radiance);
+    result.image.pixels[i] = finite ? p.radiance : Spectrum(0.0);
+    result.sample_counts[i] = p.num_samples;
+    return finite;
   };
-
-  // Every worker, even with threads == 1, runs on a thread whose stack the
-  // depth bound was measured for (render/limits.h), not on the caller's.
-  std::string why;
-  result.threads = run_on_threads(threads, kRenderThreadStackBytes, worker, &why);
-  if (result.threads == 0) result.error = why;
+  auto tile_done = [&](int done, int total) {
+    if (progress) progress(done, total, elapsed());
+  };
+  for_each_pixel(s.width, s.height, threads, pixel, tile_done, result);
   result.seconds = elapsed();
   return result;
 }

@@ -16,6 +16,8 @@ struct RenderSettings {
   bool adaptive = false;                // [-a] adaptive sampling on
   int samples_per_batch = 32;           // [-a batch tol]
   double max_tolerance = 0.05;          // [-a batch tol]
+  int adaptive_budget = 0;              // [--adaptive-budget spp] mean samples per pixel, allocated by
+                                        // render/budget.h; 0: off
   uint64_t seed = 0;                    // render seed; every pixel's stream derives from it
 };
 

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   Options opt;
   std::vector<std::string> only;
   app.add_flag("--quick", opt.quick, "every experiment at toy size (under 90 s on 2 cores)");
-  app.add_option("--only", only, "run only these experiments (bvh, direct, roulette, depth, adaptive, threads)")
+  app.add_option("--only", only, "run only these experiments (bvh, direct, roulette, depth, adaptive, allocation, threads)")
       ->delimiter(',');
   app.add_option("--out", opt.out, "output folder (created; references are cached in it)")->required();
   app.add_option("--threads,-t", opt.threads, "render threads")->check(CLI::Range(1, 64));
@@ -58,12 +58,13 @@ int main(int argc, char** argv) {
 
   const std::vector<std::pair<std::string, std::function<Experiment(const Options&)>>> experiments = {
       {"bvh", run_bvh},         {"direct", run_direct},     {"roulette", run_roulette},
-      {"depth", run_depth},     {"adaptive", run_adaptive}, {"threads", run_threads}};
+      {"depth", run_depth},     {"adaptive", run_adaptive}, {"allocation", run_allocation},
+      {"threads", run_threads}};
   std::vector<std::string> order;
   for (const auto& x : experiments) order.push_back(x.first);
   for (const std::string& n : only)
     if (std::find(order.begin(), order.end(), n) == order.end()) {
-      std::cerr << "pt-study: --only: no experiment named \"" << n << "\" (bvh, direct, roulette, depth, adaptive, threads)\n";
+      std::cerr << "pt-study: --only: no experiment named \"" << n << "\" (bvh, direct, roulette, depth, adaptive, allocation, threads)\n";
       return 2;
     }
   if (!have_gnuplot()) {

@@ -46,9 +46,10 @@ bool have_gnuplot() { return std::system("gnuplot --version > /dev/null 2>&1") =
 
 std::string draw_chart(const Options& opt, const Experiment& e) {
   // Wide enough for the panels of a multiplot.
-  int panels = 1;
-  if (auto p = e.gnuplot.find("layout 1,"); p != std::string::npos) panels = std::atoi(e.gnuplot.c_str() + p + 9);
-  const int w = 120 + 470 * panels, h = 470;
+  int rows = 1, panels = 1;
+  if (auto p = e.gnuplot.find("multiplot layout "); p != std::string::npos)
+    std::sscanf(e.gnuplot.c_str() + p + 17, "%d,%d", &rows, &panels);
+  const int w = 120 + 470 * panels, h = rows == 1 ? 470 : 60 + 380 * rows;
   std::ostringstream gp;
   gp << "# " << e.title << "\n"
      << "# Drawn from " << e.name << ".csv alone: run `gnuplot " << e.name << ".gp` in this folder (gnuplot 5.4,\n"

@@ -139,6 +139,7 @@ Experiment run_direct(const Options& opt);
 Experiment run_roulette(const Options& opt);
 Experiment run_depth(const Options& opt);
 Experiment run_adaptive(const Options& opt);
+Experiment run_allocation(const Options& opt);
 Experiment run_threads(const Options& opt);
 
 }  // namespace pt::study
