@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.h"
+#include "app/viewer_entry.h"
 #include "app/viewer_server.h"
 #include "render/limits.h"
 #include "render/renderer.h"
@@ -88,6 +89,11 @@ int bad_input(const std::string& message) {
 
 }  // namespace
 
+ViewerEntry& viewer_entry() {
+  static ViewerEntry entry = nullptr;
+  return entry;
+}
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"Headless path tracer: renders SCENE to a PNG (tone-mapped) and an EXR (linear) beside it."};
   RenderSettings s;
@@ -151,7 +157,8 @@ int run_cli(int argc, char** argv) {
     if (!camera_path.empty()) loaded.scene.camera = load_camera(camera_path);
     if (view) {
       for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
-      return run_viewer(loaded.scene, ViewerOptions{scene_path, {s, exposure}, threads, course_view, port, {}});
+      if (!viewer_entry()) return bad_input("--view: this build of the renderer has no viewer");
+      return viewer_entry()(loaded.scene, ViewerOptions{scene_path, {s, exposure}, threads, course_view, port, {}});
     }
     Camera& camera = loaded.scene.camera;
     if (course_view) camera = course_camera(camera, loaded.scene.bounds(), s.width, s.height);

@@ -86,10 +86,11 @@ bool project(const Camera& camera, int width, int height, const Vec3& p, double*
 json bvh_node_json(const Scene& scene, const std::string& path, const Camera& camera, int width, int height,
                    size_t max_drawn) {
   if (!scene.bvh || !scene.bvh->root()) throw std::invalid_argument("the scene has no BVH (construct_bvh returned none)");
-  const BVHNode* node = scene.bvh->root();
-  for (size_t i = 0; i < path.size(); ++i) {
+  for (size_t i = 0; i < path.size(); ++i)
     if (path[i] != 'l' && path[i] != 'r')
       throw std::invalid_argument("path: step " + std::to_string(i + 1) + " is '" + path.substr(i, 1) + "', expected l or r");
+  const BVHNode* node = scene.bvh->root();
+  for (size_t i = 0; i < path.size(); ++i) {
     const BVHNode* next = path[i] == 'l' ? node->l.get() : node->r.get();
     if (!next)
       throw std::invalid_argument("path: step " + std::to_string(i + 1) + " (" + path[i] + ") leaves the tree: the node " +
@@ -154,7 +155,7 @@ json pixel_path_json(const Scene& scene, const PathTracer& tracer, const Camera&
       v["point"] = vec(p);
       v["t"] = isect.t;
       v["normal"] = vec(isect.n);
-      warn_if_bad(at + " point", p);
+      if (!is_finite(p)) out["warnings"].push_back(at + " point is NaN or infinite");
       const auto& prims = scene.primitives;
       auto it = std::find_if(prims.begin(), prims.end(), [&](const auto& q) { return q.get() == isect.primitive; });
       v["primitive"] = it == prims.end() ? -1 : long(it - prims.begin());

@@ -4,6 +4,8 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +17,7 @@
 
 #include <httplib.h>
 
+#include "app/viewer_entry.h"
 #include "app/viewer_inspect.h"
 #include "app/viewer_library.h"
 #include "app/viewer_page.h"
@@ -83,6 +86,7 @@ struct ViewerServer::Impl {
   const Camera loaded_camera;  // the scene's camera (the session changes scene.camera)
   httplib::Server http;
   int port = -1;
+  std::atomic<bool> serving{false}, stopped{false};
   ViewState scene_view, course_view;
   RenderSession session;
   std::mutex mutex;  // guards settings and the library reference
@@ -213,7 +217,9 @@ void ViewerServer::Impl::routes() {
   http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) { return check_origin(req, res); });
   http.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
-    const std::string what = res.status == 404 ? "no such page or endpoint: " + req.path : "bad request";
+    const std::string what = res.status == 404   ? "no such page or endpoint: " + req.method + " " + req.path
+                             : res.status == 413 ? "the request body is larger than 64 KiB"
+                                                 : "bad request";
     send_error(res, res.status, what);
   });
   http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
@@ -389,13 +395,20 @@ int ViewerServer::bind() {
 }
 
 void ViewerServer::serve() {
+  impl_->serving = true;
   impl_->restart();
   impl_->http.listen_after_bind();
+  impl_->serving = false;
 }
 
 void ViewerServer::stop() {
-  impl_->http.stop();
   impl_->session.stop();
+  // httplib's stop() does nothing before its loop runs: wait for the loop
+  // when serve() has been called but is not listening yet.
+  while (impl_->serving && !impl_->http.is_running() && !impl_->stopped)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  impl_->stopped = true;
+  impl_->http.stop();
 }
 
 std::string ViewerServer::url() const { return "http://127.0.0.1:" + std::to_string(impl_->port) + "/"; }
@@ -430,5 +443,8 @@ int run_viewer(Scene& scene, const ViewerOptions& options) {
   waiter.join();
   return 0;
 }
+
+// Registers --view with the command line when this object is linked in.
+const bool kViewerRegistered = (viewer_entry() = &run_viewer, true);
 
 }  // namespace pt

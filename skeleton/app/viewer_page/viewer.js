@@ -60,23 +60,33 @@ function line(segments, colour, width) {
   ctx.stroke();
 }
 
+// The canvas is drawn at screen size: the image scaled up without smoothing
+// (one block per pixel), the overlays on top in image coordinates, with
+// lines a couple of screen pixels wide whatever the scale.
+const imageCanvas = document.createElement('canvas');
 function draw() {
   if (!view.image) return;
-  if (canvas.width !== view.image.width || canvas.height !== view.image.height) {
-    canvas.width = view.image.width;
-    canvas.height = view.image.height;
-    const scale = Math.max(1, Math.floor(Math.min(960 / canvas.width, 720 / canvas.height)));
-    canvas.style.width = canvas.width * scale + 'px';
+  const w = view.image.width, h = view.image.height;
+  const fit = Math.min(960 / w, 720 / h), scale = fit >= 1 ? Math.floor(fit) : fit;
+  if (canvas.width !== Math.round(w * scale) || canvas.height !== Math.round(h * scale)) {
+    canvas.width = Math.round(w * scale);
+    canvas.height = Math.round(h * scale);
   }
-  ctx.putImageData(view.image, 0, 0);
-  const px = Math.max(1, canvas.width / canvas.clientWidth);  // one screen pixel in image pixels
+  imageCanvas.width = w;
+  imageCanvas.height = h;
+  imageCanvas.getContext('2d').putImageData(view.image, 0, 0);
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(imageCanvas, 0, 0, canvas.width, canvas.height);
+  ctx.setTransform(canvas.width / w, 0, 0, canvas.height / h, 0, 0);
+  const px = w / canvas.width;  // one screen pixel in image pixels
   if (view.mode === 'bvh' && view.bvh) {
     line(view.bvh.primitive_segments, 'rgba(255,220,0,0.8)', px);
     line(view.bvh.box_segments, '#3af', 2 * px);
   }
   if (view.path) drawPath(px);
   const c = view.drag && view.mode === 'cell' ? view.drag.rect : null;
-  if (c) { ctx.strokeStyle = '#0f0'; ctx.lineWidth = px; ctx.strokeRect(c[0], c[1], c[2] - c[0], c[3] - c[1]); }
+  if (c) { ctx.strokeStyle = '#0f0'; ctx.lineWidth = 2 * px; ctx.strokeRect(c[0], c[1], c[2] - c[0], c[3] - c[1]); }
 }
 
 function drawPath(px) {
@@ -90,7 +100,7 @@ function drawPath(px) {
   const bad = view.path.warnings.length > 0 || view.path.error;
   for (const [x, y] of pts.slice(1)) {
     ctx.fillStyle = bad ? '#f00' : '#fff';
-    ctx.beginPath(); ctx.arc(x, y, 3 * px, 0, 2 * Math.PI); ctx.fill();
+    ctx.beginPath(); ctx.arc(x, y, 4 * px, 0, 2 * Math.PI); ctx.fill();
   }
 }
 
@@ -113,7 +123,7 @@ async function poll() {
     }
     view.cameraKey = key;
     const rate = view.updates.length / 5;
-    $('status').textContent = `${data.state} · ${fmt(data.spp)}/${data.target_spp} spp · ` +
+    $('status').textContent = `${data.state} · ${data.spp.toFixed(1)}/${data.target_spp} spp · ` +
       `${fmt(data.rays_per_second / 1e6)} Mrays/s · ETA ${fmt(data.eta_seconds, 2)} s · ` +
       `${data.settings.width}×${data.settings.height}, ${data.threads} threads · page ${rate.toFixed(1)} updates/s`;
     $('error').style.display = data.error ? 'block' : 'none';
@@ -262,7 +272,8 @@ const rotate = (v, k, angle) =>
 
 function imagePoint(e) {
   const r = canvas.getBoundingClientRect();
-  return [Math.floor((e.clientX - r.left) / r.width * canvas.width), Math.floor((e.clientY - r.top) / r.height * canvas.height)];
+  const w = view.image ? view.image.width : canvas.width, h = view.image ? view.image.height : canvas.height;
+  return [Math.floor((e.clientX - r.left) / r.width * w), Math.floor((e.clientY - r.top) / r.height * h)];
 }
 
 // The course viewer's controls: orbit about the target around the up axis,
@@ -315,7 +326,7 @@ window.addEventListener('mouseup', (e) => {
   const dx = e.clientX - d.x, dy = e.clientY - d.y;
   if (view.mode === 'camera' && d.moved) sendCamera(moveCamera(d.cam, dx, dy, d.pan), true);
   if (view.mode === 'cell' && d.rect) {
-    const c = d.rect.map((v, i) => Math.max(0, Math.min(v, i % 2 ? canvas.height : canvas.width)));
+    const c = d.rect.map((v, i) => Math.max(0, Math.min(v, i % 2 ? view.image.height : view.image.width)));
     act(api('POST', '/api/cell', c));
   }
   if (view.mode === 'inspect' && !d.moved) inspect(...d.start);
