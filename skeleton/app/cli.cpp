@@ -153,12 +153,21 @@ int run_cli(int argc, char** argv) {
 
   LoadedScene loaded;
   try {
-    loaded = load_scene(scene_path, scene_info ? BuildBvh::No : BuildBvh::Yes);
+    // The viewer builds the BVH itself, so that a student's construct_bvh
+    // that throws shows on its page instead of ending it.
+    loaded = load_scene(scene_path, scene_info || view ? BuildBvh::No : BuildBvh::Yes);
     if (!camera_path.empty()) loaded.scene.camera = load_camera(camera_path);
     if (view) {
       for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
       if (!viewer_entry()) return bad_input("--view: this build of the renderer has no viewer");
-      return viewer_entry()(loaded.scene, ViewerOptions{scene_path, {s, exposure}, threads, course_view, port, {}});
+      ViewerOptions options{scene_path, {s, exposure}, threads, course_view, port, {}, ""};
+      try {
+        loaded.scene.build();
+      } catch (const std::exception& e) {
+        options.scene_error = std::string("building the BVH: ") + e.what();
+        std::cerr << "error: " << scene_path << ": " << options.scene_error << " (the viewer shows the scene without it)\n";
+      }
+      return viewer_entry()(loaded.scene, options);
     }
     Camera& camera = loaded.scene.camera;
     if (course_view) camera = course_camera(camera, loaded.scene.bounds(), s.width, s.height);

@@ -85,7 +85,8 @@ bool project(const Camera& camera, int width, int height, const Vec3& p, double*
 
 json bvh_node_json(const Scene& scene, const std::string& path, const Camera& camera, int width, int height,
                    size_t max_drawn) {
-  if (!scene.bvh || !scene.bvh->root()) throw std::invalid_argument("the scene has no BVH (construct_bvh returned none)");
+  if (!scene.bvh) throw std::invalid_argument("the scene has no BVH (building it failed: the status says why)");
+  if (!scene.bvh->root()) throw std::invalid_argument("the BVH has no root (construct_bvh returned none)");
   for (size_t i = 0; i < path.size(); ++i)
     if (path[i] != 'l' && path[i] != 'r')
       throw std::invalid_argument("path: step " + std::to_string(i + 1) + " is '" + path.substr(i, 1) + "', expected l or r");

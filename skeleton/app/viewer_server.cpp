@@ -99,15 +99,19 @@ struct ViewerServer::Impl {
       : scene(s),
         options(std::move(o)),
         loaded_camera(s.camera),
-        session(s, options.threads, options.make_tracer ? options.make_tracer : [](const Scene& sc, const RenderSettings& rs) {
-          return std::make_unique<PathTracer>(sc, rs);
-        }),
+        session(s, options.threads, [this](const Scene& sc, const RenderSettings& rs) { return make_tracer(sc, rs); }),
         settings(options.settings) {
     const BBox bounds = scene.bounds();
     scene_view = view_of(loaded_camera, bounds.centroid());
     const RenderSettings& r = settings.render;
     course_view = view_of(course_camera(loaded_camera, bounds, r.width, r.height), bounds.centroid());
     routes();
+  }
+
+  // The estimator a render or the inspector uses; none without a BVH.
+  std::unique_ptr<PathTracer> make_tracer(const Scene& sc, const RenderSettings& rs) const {
+    if (!options.scene_error.empty() || !sc.bvh) throw std::runtime_error(options.scene_error.empty() ? "the scene has no BVH" : options.scene_error);
+    return options.make_tracer ? options.make_tracer(sc, rs) : std::make_unique<PathTracer>(sc, rs);
   }
 
   std::vector<std::string> allowed_hosts() const {
@@ -355,7 +359,8 @@ void ViewerServer::Impl::routes() {
     const int x = int_param(req, "x", 0, r.width), row = int_param(req, "y", 0, r.height);
     const Snapshot snap = session.snapshot();
     const Camera camera = session.view().camera(r.width, r.height);
-    std::unique_ptr<PathTracer> tracer = options.make_tracer ? options.make_tracer(scene, r) : std::make_unique<PathTracer>(scene, r);
+    if (!scene.bvh) return send_error(res, 409, "no path can be traced: " + options.scene_error);
+    std::unique_ptr<PathTracer> tracer = make_tracer(scene, r);
     json j = pixel_path_json(scene, *tracer, camera, x, row);
     const Spectrum v = snap.image.at(x, row);
     j["value"] = {v.r, v.g, v.b};

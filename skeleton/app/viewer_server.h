@@ -19,6 +19,7 @@ struct ViewerOptions {
   bool course_camera = false;  // start from --course-camera's view
   int port = 0;                // 0: any free port
   TracerFactory make_tracer;   // empty: the PathTracer the binary was built with
+  std::string scene_error;     // why the scene has no BVH (a task threw): every render fails with it
 };
 
 class ViewerServer {

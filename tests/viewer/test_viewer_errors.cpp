@@ -135,6 +135,22 @@ TEST(ViewerErrors, AThrowingTaskShowsItsMessageAndTheServerStaysUp) {
   EXPECT_EQ(st["generation"], 2);
 }
 
+// construct_bvh threw while --view loaded the scene: the page says so, and
+// everything that needs the tree answers with that message.
+TEST(ViewerErrors, ABvhThatCouldNotBeBuiltIsShownNotFatal) {
+  const std::string why = "building the BVH: not implemented: P2T1 BVHAccel::construct_bvh";
+  ServedViewer v("tests/one_sphere.json", {}, ServedViewer::small_settings(), why);
+  const json st = v.wait_until_finished();
+  EXPECT_EQ(st["state"], "error");
+  EXPECT_EQ(st["error"], why);
+  const json bvh = v.get("/api/bvh", 400);
+  EXPECT_NE(bvh["error"].get<std::string>().find("no BVH"), std::string::npos) << bvh.dump();
+  const json pixel = v.get("/api/pixel?x=1&y=1", 409);
+  EXPECT_NE(pixel["error"].get<std::string>().find(why), std::string::npos) << pixel.dump();
+  EXPECT_EQ(v.get("/api/camera/reset?to=course", 404).is_object(), true);  // a POST endpoint: GET is unknown
+  v.post("/api/camera/reset?to=course", std::string());  // the camera still moves
+}
+
 // The inspector names the task that threw in the path it could trace.
 TEST(ViewerErrors, AThrowingTaskEndsTheInspectedPathWithItsName) {
   struct ThrowingDirect : BSDF {

@@ -24,9 +24,13 @@ inline std::string scene_file(const std::string& name) { return std::string(PT_S
 class ServedViewer {
  public:
   // Tiny default settings so that every render takes a fraction of a second.
-  explicit ServedViewer(const std::string& scene, TracerFactory make_tracer = {}, RenderSettings s = small_settings())
-      : loaded_(load_scene(scene_file(scene))) {
+  // A non-empty scene_error serves the scene without a BVH, as --view does
+  // when construct_bvh throws.
+  explicit ServedViewer(const std::string& scene, TracerFactory make_tracer = {}, RenderSettings s = small_settings(),
+                        const std::string& scene_error = "")
+      : loaded_(load_scene(scene_file(scene), scene_error.empty() ? BuildBvh::Yes : BuildBvh::No)) {
     ViewerOptions options;
+    options.scene_error = scene_error;
     options.scene_path = scene_file(scene);
     options.settings.render = s;
     options.threads = 2;

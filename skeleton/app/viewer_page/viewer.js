@@ -105,6 +105,7 @@ function drawPath(px) {
 }
 
 // ---- status -----------------------------------------------------------------
+function duration(s) { return s < 60 ? s.toFixed(1) + ' s' : Math.floor(s / 60) + ' min ' + Math.round(s % 60) + ' s'; }
 function fmt(x, digits = 3) { return x === null || x === undefined ? 'NaN' : Number(x).toPrecision(digits); }
 
 async function poll() {
@@ -124,7 +125,7 @@ async function poll() {
     view.cameraKey = key;
     const rate = view.updates.length / 5;
     $('status').textContent = `${data.state} · ${data.spp.toFixed(1)}/${data.target_spp} spp · ` +
-      `${fmt(data.rays_per_second / 1e6)} Mrays/s · ETA ${fmt(data.eta_seconds, 2)} s · ` +
+      `${fmt(data.rays_per_second / 1e6)} Mrays/s · ETA ${duration(data.eta_seconds)} · ` +
       `${data.settings.width}×${data.settings.height}, ${data.threads} threads · page ${rate.toFixed(1)} updates/s`;
     $('error').style.display = data.error ? 'block' : 'none';
     $('error').textContent = data.error ? 'A task threw: ' + data.error + '\nThe server is still up: fix the task, rebuild, and run --view again.' : '';
