@@ -68,6 +68,14 @@ double subtree_cost(const BVHNode* n, double root_area) {
   return ratio + (n->l ? subtree_cost(n->l.get(), root_area) : 0) + (n->r ? subtree_cost(n->r.get(), root_area) : 0);
 }
 
+// A secondary ray leaving surface point p, kRayEpsilon along (Part 3's
+// handout, section 7), as the estimators' own rays do.
+Ray leaving(const Vec3& p, const Vec3& d, double max_t, int depth = 0) {
+  Ray out(p, d, max_t, depth);
+  out.min_t = kRayEpsilon;
+  return out;
+}
+
 std::string primitive_kind(const Primitive* p) {
   if (dynamic_cast<const Triangle*>(p)) return "triangle";
   if (dynamic_cast<const Sphere*>(p)) return "sphere";
@@ -140,7 +148,6 @@ json pixel_path_json(const Scene& scene, const PathTracer& tracer, const Camera&
   try {
     Ray r = camera.generate_ray((x + 0.5) / s.width, (y + 0.5) / s.height);
     out["camera_ray"] = {{"origin", vec(r.o)}, {"direction", vec(r.d)}};
-    Spectrum beta(1.0);  // the path's throughput so far
     for (int depth = s.max_ray_depth, k = 0; k <= s.max_ray_depth; ++k, --depth) {
       json v{{"index", k}};
       Intersection isect;
@@ -180,16 +187,15 @@ json pixel_path_json(const Scene& scene, const PathTracer& tracer, const Camera&
         Vec3 wi;
         double dist, pdf;
         const Spectrum L = scene.lights[li]->sample_L(p, &wi, &dist, &pdf, rng);
-        Ray shadow(p, wi, dist - kRayEpsilon);
-        shadow.min_t = kRayEpsilon;
         lights.push_back({{"light", li}, {"direction", vec(wi)}, {"radiance", vec(L)}, {"pdf", pdf},
-                          {"visible", !scene.has_intersection(shadow)}, {"cos", glm::dot(wi, isect.n)}});
+                          {"visible", !scene.has_intersection(leaving(p, wi, dist - kRayEpsilon))}, {"cos", glm::dot(wi, isect.n)}});
       }
       v["light_samples"] = lights;
       task = "P3T5 one_bounce_radiance";
       const Spectrum direct = depth >= 1 ? tracer.one_bounce_radiance(r, isect, rng) : Spectrum(0.0);
+      // This vertex's own contribution, as the task returns it; the path's
+      // throughput is left to the student (it is Part 4's weight).
       v["direct"] = vec(direct);
-      v["contribution"] = vec(beta * direct);
       warn_if_bad(at + " direct light", direct);
       if (depth <= 1) {
         v["end"] = "maximum depth reached";
@@ -197,11 +203,11 @@ json pixel_path_json(const Scene& scene, const PathTracer& tracer, const Camera&
         break;
       }
       task = "P3T1 BSDF::sample_f";
-      const Frame frame = Frame::from_normal(isect.n);
+      const Frame local = Frame::from_normal(isect.n);
       Vec3 w_in;
       double pdf = 0;
-      const Spectrum f = isect.bsdf->sample_f(frame.to_local(-r.d), &w_in, &pdf, rng);
-      const Vec3 wi = frame.to_world(w_in);
+      const Spectrum f = isect.bsdf->sample_f(local.to_local(-r.d), &w_in, &pdf, rng);
+      const Vec3 wi = local.to_world(w_in);
       v["bsdf_sample"] = {{"direction", vec(wi)}, {"f", vec(f)}, {"pdf", pdf}, {"cos", w_in.z}};
       warn_if_bad(at + " BSDF value", f);
       if (!(pdf > 0)) out["warnings"].push_back(at + " BSDF pdf is " + (std::isnan(pdf) ? "NaN" : "not positive"));
@@ -213,9 +219,7 @@ json pixel_path_json(const Scene& scene, const PathTracer& tracer, const Camera&
       v["russian_roulette"] = {{"p", p_continue}, {"draw", draw}, {"survives", survives}};
       out["vertices"].push_back(v);
       if (!survives || !(pdf > 0)) break;
-      beta *= f * (w_in.z / (pdf * p_continue));
-      r = Ray(p, wi, kInf, depth - 1);
-      r.min_t = kRayEpsilon;
+      r = leaving(p, wi, kInf, depth - 1);
     }
   } catch (const std::exception& e) {
     out["error"] = std::string(e.what()) + " (in " + task + ")";

@@ -242,14 +242,14 @@ async function inspect(x, y) {
   if (!r) return;
   const p = (view.path = r.data);
   let html = `pixel (${x}, ${y}) from the top-left: value <span${badCell(p.value)}>${v3(p.value)}</span>, ${p.samples} samples<br>`;
-  html += 'One path, traced by the viewer calling your task functions in turn:<table><tr><th>#</th><th>hit</th><th>direct light / contribution</th><th>BSDF sample</th><th>RR</th></tr>';
+  html += 'One path, traced by the viewer calling your task functions in turn:<table><tr><th>#</th><th>hit</th><th>direct light (P3T5) and light samples</th><th>BSDF sample</th><th>RR</th></tr>';
   for (const v of p.vertices) {
     if (v.escaped) { html += `<tr><td>${v.index}</td><td colspan="4">escaped: background ${v3(v.background)}</td></tr>`; continue; }
     const b = v.bsdf_sample, rr = v.russian_roulette;
     const lights = (v.light_samples || []).map((l) => `light ${l.light}: pdf ${fmt(l.pdf)}, L ${v3(l.radiance)}, ${l.visible ? 'visible' : 'shadowed'}`).join('<br>');
     html += `<tr><td>${v.index}</td><td>${v.primitive_kind} #${v.primitive}<br>p ${v3(v.point)}<br>n ${v3(v.normal)}` +
       `${v.emitted ? '<br>Le ' + v3(v.emitted) : ''}${v.error ? '<br><span class="bad">' + v.error + '</span>' : ''}</td>` +
-      `<td><span${badCell(v.direct)}>${v3(v.direct)}</span><br>× throughput: <span${badCell(v.contribution)}>${v3(v.contribution)}</span><br>${lights}</td>` +
+      `<td><span${badCell(v.direct)}>${v3(v.direct)}</span><br>${lights}</td>` +
       `<td>${b ? `wi ${v3(b.direction)}<br>f <span${badCell(b.f)}>${v3(b.f)}</span><br>pdf <span${badCell([b.pdf])}>${fmt(b.pdf)}</span>` : v.end || ''}</td>` +
       `<td>${rr ? `p ${fmt(rr.p)}, draw ${fmt(rr.draw)}: ${rr.survives ? 'continues' : 'ends'}` : ''}</td></tr>`;
   }
