@@ -217,6 +217,12 @@ struct ViewerServer::Impl {
 };
 
 void ViewerServer::Impl::routes() {
+  // httplib's default also sets SO_REUSEPORT, which lets a second viewer
+  // bind the same port and take half the requests: only SO_REUSEADDR here.
+  http.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
+  });
   http.set_payload_max_length(1 << 16);
   http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) { return check_origin(req, res); });
   http.set_error_handler([](const httplib::Request& req, httplib::Response& res) {

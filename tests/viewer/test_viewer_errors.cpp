@@ -40,6 +40,19 @@ TEST(ViewerErrors, RefusesAnotherHostOrOrigin) {
   EXPECT_EQ(v.wait_until_finished()["state"], "stopped");
 }
 
+// A second viewer cannot take the port of a running one (it would share its
+// requests): its bind fails, and --view says so.
+TEST(ViewerErrors, ASecondViewerCannotTakeTheSamePort) {
+  ServedViewer first("tests/one_sphere.json");
+  LoadedScene loaded = load_scene(scene_file("tests/one_sphere.json"));
+  ViewerOptions options;
+  options.scene_path = scene_file("tests/one_sphere.json");
+  options.port = first.port();
+  ViewerServer second(loaded.scene, options);
+  EXPECT_EQ(second.bind(), -1);
+  EXPECT_EQ(first.get("/api/status")["scene"], scene_file("tests/one_sphere.json"));
+}
+
 TEST(ViewerErrors, BadRequestsGetA4xxWithAMessage) {
   ServedViewer v("tests/one_sphere.json");
   struct Bad {
