@@ -120,6 +120,7 @@ async function poll() {
     const key = JSON.stringify([data.camera, data.settings.width, data.settings.height]);
     if (view.cameraKey && key !== view.cameraKey) {
       view.path = null;
+      $('pixel-info').textContent = 'The view changed: click a pixel again.';
       if (view.bvh) walk(view.bvhPath);
     }
     view.cameraKey = key;

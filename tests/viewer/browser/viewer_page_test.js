@@ -145,6 +145,17 @@ async function main() {
     await shot(page, '5_reference');
 
     check(pageErrors.length === 0, 'no script errors on the page' + (pageErrors.length ? ': ' + pageErrors.join('; ') : ''));
+
+    // 6. Closing the page stops the render (its pagehide beacon): restart a
+    // long render, close the page, and wait for the server to say stopped.
+    await page.evaluate(() => fetch('/api/settings', { method: 'POST', body: JSON.stringify({ samples: 100000 }) }));
+    await page.close({ runBeforeUnload: true });
+    let state = '';
+    for (let i = 0; i < 300 && state !== 'stopped'; ++i) {
+      state = (await (await fetch(url + 'api/status')).json()).state;
+      if (state !== 'stopped') await new Promise((r) => setTimeout(r, 100));
+    }
+    check(state === 'stopped', 'closing the page stopped the render (state ' + state + ')');
   } finally {
     await browser.close();
     fs.rmSync(profile, { recursive: true, force: true });
