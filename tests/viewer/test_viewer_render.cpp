@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "app/cli.h"
 #include "io/image_file.h"
 #include "render/limits.h"
@@ -16,6 +18,11 @@ namespace pt::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A file name in the temporary folder that no other process running this test uses.
+std::string temp_file(const std::string& name) {
+  return (fs::temp_directory_path() / ("pt_viewer_" + std::to_string(getpid()) + "_" + name)).string();
+}
 
 TEST(ViewerRender, ProgressReachesTheSampleCountPassByPass) {
   RenderSettings s = ServedViewer::small_settings();
@@ -67,7 +74,7 @@ TEST(ViewerRender, PauseResumeStopAndRestart) {
 // Renders `args` headless (the same binary's command line, in-process) and
 // returns the EXR it writes.
 Image render_headless(std::vector<std::string> args, const std::string& name) {
-  const std::string png = (fs::temp_directory_path() / ("pt_viewer_" + name + ".png")).string();
+  const std::string png = temp_file(name + ".png");
   args.insert(args.begin(), "pathtracer");
   for (std::string extra : {"-q", "-t", "2", "-f"}) args.push_back(extra);
   args.push_back(png);
@@ -164,7 +171,7 @@ TEST(ViewerRender, CameraFileRoundTrip) {
   v.wait_until_finished();
   const json saved = v.get("/api/camera");
   EXPECT_EQ(saved, cam);
-  const std::string file = (fs::temp_directory_path() / "pt_viewer_camera.json").string();
+  const std::string file = temp_file("camera.json");
   FILE* out = std::fopen(file.c_str(), "w");
   ASSERT_NE(out, nullptr);
   std::fputs(saved.dump(2).c_str(), out);
