@@ -12,6 +12,7 @@ packages=(
   libglm-dev libstb-dev libtinyexr-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev libarchive-dev zip
   libboost-math-dev libseccomp-dev
+  libcpp-httplib-dev
   gnuplot-nox
 )
 missing=()

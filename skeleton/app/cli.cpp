@@ -15,6 +15,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.h"
+#include "app/viewer_entry.h"
+#include "app/viewer_server.h"
 #include "render/limits.h"
 #include "render/renderer.h"
 #include "scene/course_camera.h"
@@ -87,6 +89,11 @@ int bad_input(const std::string& message) {
 
 }  // namespace
 
+ViewerEntry& viewer_entry() {
+  static ViewerEntry entry = nullptr;
+  return entry;
+}
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"Headless path tracer: renders SCENE to a PNG (tone-mapped) and an EXR (linear) beside it."};
   RenderSettings s;
@@ -96,7 +103,8 @@ int run_cli(int argc, char** argv) {
   int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, kMaxThreads);
   int accumulate = 1;
   double exposure = 0.0;
-  bool quiet = false, course_view = false, scene_info = false;
+  bool quiet = false, course_view = false, scene_info = false, view = false;
+  int port = 8642;
 
   app.add_option("scene", scene_path, "Scene file (.json or .dae)")->required();
   app.add_option("-s,--samples", s.ns_aa, "Samples per pixel (the cap with -a)")->check(within(1, kMaxSamples));
@@ -123,6 +131,10 @@ int run_cli(int argc, char** argv) {
   app.add_flag("--course-camera", course_view,
                "Frame the scene as the course's viewer does (its bounding box, the camera's view direction)");
   app.add_flag("--scene-info", scene_info, "Print a summary of the scene as one JSON object and exit");
+  app.add_flag("--view", view,
+               "Serve the interactive viewer on 127.0.0.1 (prints its URL): progressive render, camera, BVH walk, "
+               "pixel inspector, reference flip; the other flags are its starting settings");
+  app.add_option("--port", port, "The viewer's port (0: any free port)")->check(within(0, 65535));
   if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   if (!resolution.empty()) s.width = resolution[0], s.height = resolution[1];
@@ -143,12 +155,26 @@ int run_cli(int argc, char** argv) {
   const bool rate_image = s.adaptive || s.adaptive_budget > 0;
   if (rate_image) outputs.push_back(rate_path);
   for (const std::string& path : outputs)
-    if (std::string why = check_writable(path); !why.empty() && !scene_info) return bad_input(why);
+    if (std::string why = check_writable(path); !why.empty() && !scene_info && !view) return bad_input(why);
 
   LoadedScene loaded;
   try {
-    loaded = load_scene(scene_path, scene_info ? BuildBvh::No : BuildBvh::Yes);
+    // The viewer builds the BVH itself, so that a student's construct_bvh
+    // that throws shows on its page instead of ending it.
+    loaded = load_scene(scene_path, scene_info || view ? BuildBvh::No : BuildBvh::Yes);
     if (!camera_path.empty()) loaded.scene.camera = load_camera(camera_path);
+    if (view) {
+      for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
+      if (!viewer_entry()) return bad_input("--view: this build of the renderer has no viewer");
+      ViewerOptions options{scene_path, {s, exposure}, threads, course_view, port, {}, ""};
+      try {
+        loaded.scene.build();
+      } catch (const std::exception& e) {
+        options.scene_error = std::string("building the BVH: ") + e.what();
+        std::cerr << "error: " << scene_path << ": " << options.scene_error << " (the viewer shows the scene without it)\n";
+      }
+      return viewer_entry()(loaded.scene, options);
+    }
     Camera& camera = loaded.scene.camera;
     if (course_view) camera = course_camera(camera, loaded.scene.bounds(), s.width, s.height);
   } catch (const std::exception& e) {

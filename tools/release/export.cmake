@@ -72,6 +72,7 @@ if(MODE STREQUAL "student")
   endforeach()
   copy_tree(tests/framework)
   copy_tree(tests/cli)
+  copy_tree(tests/viewer EXCLUDE "/node_modules/")
   # The grader, for `pt-grade run` on the student's own machine; not the
   # instructor's threat model, kit or Gradescope packaging.
   copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope)/" "^autograder/README\\.md$" "^autograder/tests/(test_gradescope|test_report)\\.sh$" "^autograder/tests/browser/")
