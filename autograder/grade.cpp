@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "check_submission.h"
 #include "checks.h"
 #include "grade_part.h"
 #include "manifest.h"
@@ -96,6 +97,9 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
   const Redactor redactor(manifest ? manifest->solution_lines : std::set<uint64_t>());
   Sandbox sandbox(opt.sandbox);
   Report report = start_report(sandbox);
+#ifdef PT_SOURCE_ROOT
+  report.hidden_not_run = hidden_not_run_in(PT_SOURCE_ROOT);  // the student release's hidden tests
+#endif
   auto save = [&] {
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!json_path.empty()) write_results_json(json_path, report);
@@ -198,7 +202,8 @@ int main(int argc, char** argv) {
   CLI::App app{"pt-grade: scores the graded test binaries; checks the stubs and the mutants", "pt-grade"};
   app.require_subcommand(1);
   app.footer(
-      "Each binary's output goes to BINARY.grade.log. autograder/README.md has the limits and the sandbox.\n"
+      "Each binary's output goes to BINARY.grade.log. Time limits: --test-timeout per test, --part-budget per part,\n"
+      "--budget for all parts (defaults below). The sandbox's layers: pt-grade sandbox.\n"
       "Exit status: 0 graded (whatever the score) or check passed, 1 check failed, 2 could not grade.");
   Options opt;
 #ifdef PT_GRADE_READABLE
@@ -318,6 +323,20 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   add_grading(submission_cmd);
 
+  CheckOptions check;
+#if defined(PT_SOURCE_ROOT) && defined(PT_BINARY_ROOT)
+  check.source_dir = PT_SOURCE_ROOT;
+  check.build_dir = PT_BINARY_ROOT;
+#endif
+  check.tasks = (fs::path(check.source_dir) / "tasks").string();
+  CLI::App* check_cmd = app.add_subcommand(
+      "check-submission",
+      "in the student release: what the grader will do with your task files (intake, includes, edited framework "
+      "files, each part built alone, the visible tests, the hidden points not run)");
+  check_cmd->add_option("TASKS", check.tasks, "the folder or .zip you will submit")->capture_default_str();
+  check_cmd->add_option("--build-dir", check.build_dir, "the release's build folder")->type_name("DIR")->capture_default_str();
+  add_grading(check_cmd);
+
   CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
   sandbox_cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
       ->type_name("USER");
@@ -340,6 +359,11 @@ int main(int argc, char** argv) {
     if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
     if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
     if (*sandbox_cmd) return print_sandbox(opt.sandbox);
+    if (*check_cmd) {
+      check.limits = opt.limits;
+      check.sandbox = opt.sandbox;
+      return check_submission(check);
+    }
     if (*submission_cmd) {
       sub.limits = opt.limits;
       sub.sandbox = opt.sandbox;

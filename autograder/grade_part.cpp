@@ -170,7 +170,11 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     if (next.empty()) next = left;
     std::string filter = "--gtest_filter=";
     for (const TestResult* t : next) filter += t->test.name + (t == next.back() ? "" : ":");
-    RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no"}, make_key()};
+    // The test main's own limit (support/test_main.cpp) prints the hung
+    // test's task and stack just before this one ends the run.
+    char timeout_flag[64];
+    std::snprintf(timeout_flag, sizeof timeout_flag, "--pt_test_timeout=%g", limits.test_seconds);
+    RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no", timeout_flag}, make_key(), ""};
     if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
     RunWatch watch(request.key, limits, part_end, submission_first);
     const RunOutcome run = sandbox.run(request, watch);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,35 @@ std::vector<std::string> all_notes(const Report& report) {
 
 }  // namespace
 
+std::string folded(const std::string& text, const std::string& indent, size_t width) {
+  std::string out;
+  const size_t size = text.find_last_not_of('\n') + 1;  // npos + 1 == 0: nothing but newlines
+  size_t pos = 0;
+  while (pos < size) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string::npos || end > size) end = size;
+    std::string_view line(text.data() + pos, end - pos);
+    bool continuation = false;
+    do {
+      // Continuation lines are marked so that a reader sees one line folded,
+      // not two lines.
+      const std::string lead = indent + (continuation ? "  " : "");
+      std::string_view piece = line;
+      if (line.size() > width) {
+        const size_t space = line.rfind(' ', width);
+        piece = line.substr(0, space != std::string_view::npos && space > width / 2 ? space + 1 : width);
+      }
+      out += lead;
+      out += piece;
+      out += "\n";
+      line.remove_prefix(piece.size());
+      continuation = true;
+    } while (!line.empty());
+    pos = end + 1;
+  }
+  return out;
+}
+
 void write_results_json(const std::string& path, const Report& report) {
   json tests = json::array(), parts = json::object();
   double score = 0;
@@ -112,6 +142,7 @@ void write_results_json(const std::string& path, const Report& report) {
 void print_report(const Report& report, bool show_hidden) {
   std::printf("\n%-6s %-14s %-14s %s\n", "part", "tests passed", "points", "");
   Tally all;
+  HiddenNotRun all_unrun;
   for (const auto& p : report.parts) {
     Tally part, hidden;
     for (const auto& t : p.tests) {
@@ -121,10 +152,18 @@ void print_report(const Report& report, bool show_hidden) {
     }
     std::string extra =
         hidden.total == 0 ? "" : "including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points";
-    if (!p.graded) extra = "not graded";
+    if (auto it = report.hidden_not_run.find(p.part); it != report.hidden_not_run.end() && it->second.tests > 0) {
+      extra += (extra.empty() ? "" : "; ") + std::string("hidden: ") + std::to_string(it->second.tests) + " tests, " +
+               points_text(it->second.points) + " not run here";
+      all_unrun.tests += it->second.tests;
+      all_unrun.points += it->second.points;
+    }
+    if (!p.graded) extra = "not graded" + (extra.empty() ? "" : "; " + extra);
     std::printf("%-6d %-14s %-14s %s\n", p.part, part.tests().c_str(), part.points().c_str(), extra.c_str());
   }
-  std::printf("%-6s %-14s %s\n", "total", all.tests().c_str(), all.points().c_str());
+  const std::string unrun =
+      all_unrun.tests == 0 ? "" : "hidden: " + points_text(all_unrun.points) + " not run here (the grader runs them)";
+  std::printf("%-6s %-14s %-14s %s\n", "total", all.tests().c_str(), all.points().c_str(), unrun.c_str());
 
   bool header = false;
   for (const auto& p : report.parts) {
@@ -139,7 +178,7 @@ void print_report(const Report& report, bool show_hidden) {
       }
       std::printf("  %s %s%s (%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
                   points_text(t.test.points).c_str());
-      std::fputs(first_lines(t.message, 6, "      ").c_str(), stdout);
+      std::fputs(folded(t.message, "      ").c_str(), stdout);
       if (!t.output.empty()) {
         std::printf("      last output:\n");
         std::fputs(first_lines(t.output, 12, "      | ").c_str(), stdout);
@@ -151,7 +190,7 @@ void print_report(const Report& report, bool show_hidden) {
   for (const auto& n : report.instructor_notes) std::fputs(first_lines(n, 12, "  ").c_str(), stdout);
   const auto notes = all_notes(report);
   if (!notes.empty()) std::printf("\nNotes:\n");
-  for (const auto& n : notes) std::fputs(first_lines(n, 4, "  ").c_str(), stdout);
+  for (const auto& n : notes) std::fputs(folded(n, "  ").c_str(), stdout);
   std::fflush(stdout);
 }
 

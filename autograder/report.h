@@ -1,6 +1,7 @@
 #pragma once
 // What a grading produced, and its two renderings: the score table a person
 // reads in a terminal, and Gradescope's results.json.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -8,8 +9,17 @@
 
 namespace pt::grade {
 
+// Hidden tests a build without them could not run (the student release): the
+// table says how many points they are worth, so that a full visible score is
+// never read as full marks.
+struct HiddenNotRun {
+  int tests = 0;
+  double points = 0;
+};
+
 struct Report {
   std::vector<PartResult> parts;
+  std::map<int, HiddenNotRun> hidden_not_run;  // by part
   std::vector<std::string> notes;  // for the instructor: missing binaries, sandbox layers missing, ...
   // For the instructor's eyes only (the source flags of pt-grade submission):
   // in results.json as a hidden test worth nothing, never shown to students.
@@ -25,8 +35,13 @@ struct Report {
 // Throws std::runtime_error when the file cannot be written.
 void write_results_json(const std::string& path, const Report& report);
 
-// The score table, the failed tests with their messages (hidden ones by task
-// only, unless show_hidden) and the notes, on stdout.
+// The score table, the failed tests with their whole messages (hidden ones by
+// task only, unless show_hidden; long lines folded, never cut) and the notes,
+// on stdout.
 void print_report(const Report& report, bool show_hidden);
+
+// `text` with every line indented and folded at `width` columns (at a space
+// where there is one), nothing left out.
+std::string folded(const std::string& text, const std::string& indent, size_t width = 100);
 
 }  // namespace pt::grade

@@ -54,9 +54,18 @@ std::string seconds_text(double s) {
   return buf;
 }
 
+std::string joined_findings(const std::vector<SourceFinding>& found, const std::string& file) {
+  std::string text;
+  for (const auto& f : found) text += file + ":" + std::to_string(f.line) + ": " + f.what + "\n";
+  return text;
+}
+
+}  // namespace
+
 // What a failed build printed that a student needs: the compiler's errors
 // first (with the lines that locate them), ninja's progress lines dropped.
-std::string compiler_errors(const std::string& output, const fs::path& tree, size_t max_lines = 40) {
+std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines) {
+  const fs::path tree = tree_dir;
   std::istringstream in(output);
   std::vector<std::string> kept;
   const std::string prefix = tree.string() + "/";
@@ -84,15 +93,13 @@ std::string compiler_errors(const std::string& output, const fs::path& tree, siz
   return text;
 }
 
-// Every file the compiler opened for the part's task file (ninja's record of
-// its dependency output), outside the folders a task file may read from.
-std::vector<std::string> unexpected_dependencies(const fs::path& tree, int part) {
+// Every file the compiler opened for the objects of one target (ninja's
+// record of its dependency output), outside the folders a task file may read.
+std::vector<std::string> unexpected_dependencies(const std::string& build_dir, const std::string& object_marker,
+                                                 const std::vector<std::string>& allowed) {
   std::string out;
-  run_command({"ninja", "-C", (tree / "build").string(), "-t", "deps"}, &out);
+  run_command({"ninja", "-C", build_dir, "-t", "deps"}, &out);
   std::istringstream in(out);
-  const std::string object_marker = "student_part" + std::to_string(part) + ".dir/";
-  const std::vector<std::string> allowed = {(tree / "tasks").string() + "/", (tree / "include").string() + "/",
-                                            "/usr/include/", "/usr/lib/gcc/", "/usr/local/include/"};
   std::vector<std::string> unexpected;
   bool in_object = false;
   for (std::string line; std::getline(in, line);) {
@@ -104,7 +111,7 @@ std::vector<std::string> unexpected_dependencies(const fs::path& tree, int part)
     if (!in_object) continue;
     std::string dep = line.substr(line.find_first_not_of(' '));
     fs::path p = fs::path(dep);
-    if (p.is_relative()) p = tree / "build" / p;
+    if (p.is_relative()) p = fs::path(build_dir) / p;
     const std::string norm = p.lexically_normal().string();
     bool ok = false;
     for (const auto& a : allowed) ok = ok || norm.rfind(a, 0) == 0;
@@ -113,13 +120,15 @@ std::vector<std::string> unexpected_dependencies(const fs::path& tree, int part)
   return unexpected;
 }
 
-std::string joined_findings(const std::vector<SourceFinding>& found, const std::string& file) {
-  std::string text;
-  for (const auto& f : found) text += file + ":" + std::to_string(f.line) + ": " + f.what + "\n";
-  return text;
+std::string intake_rejection(const TaskFile& f, const std::set<std::string>& headers, std::string* flags) {
+  if (f.too_large)
+    return f.where + " is larger than " + std::to_string(kMaxTaskFileBytes >> 20) + " MiB: rejected before building";
+  const SourceScan scan = scan_task_source(f.text, headers);
+  if (flags && !scan.flags.empty())
+    *flags = "source flags in " + f.where + " (the score is not affected):\n" + joined_findings(scan.flags, f.where);
+  if (!scan.rejections.empty()) return f.where + " rejected before building:\n" + joined_findings(scan.rejections, f.where);
+  return "";
 }
-
-}  // namespace
 
 int grade_submission(const SubmissionOptions& opt) {
   const auto start = Clock::now();
@@ -189,17 +198,11 @@ int grade_submission(const SubmissionOptions& opt) {
       report.notes.push_back(f.where + ": part " + std::to_string(f.part) + " has no graded tests in this kit; not built");
       continue;
     }
-    if (f.too_large) {
-      set_part(f.part, f.where + " is larger than " + std::to_string(kMaxTaskFileBytes >> 20) +
-                           " MiB: rejected before building");
-      continue;
-    }
-    const SourceScan scan = scan_task_source(f.text, headers);
-    if (!scan.flags.empty())
-      report.instructor_notes.push_back("source flags in " + f.where + " (the score is not affected):\n" +
-                                        joined_findings(scan.flags, f.where));
-    if (!scan.rejections.empty()) {
-      set_part(f.part, f.where + " rejected before building:\n" + joined_findings(scan.rejections, f.where));
+    std::string flags;
+    const std::string rejected = intake_rejection(f, headers, &flags);
+    if (!flags.empty()) report.instructor_notes.push_back(flags);
+    if (!rejected.empty()) {
+      set_part(f.part, rejected);
       continue;
     }
     buildable.push_back(&f);
@@ -260,11 +263,14 @@ int grade_submission(const SubmissionOptions& opt) {
       const bool timed_out = rc == 124 || rc == 137;
       std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
                                   : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
-      why += compiler_errors(out, tree);
+      why += compiler_errors(out, tree.string());
       set_part(f->part, why);
       continue;
     }
-    const auto unexpected = unexpected_dependencies(tree, f->part);
+    const auto unexpected = unexpected_dependencies(
+        (tree / "build").string(), "student_part" + std::to_string(f->part) + ".dir/",
+        {(tree / "tasks").string() + "/", (tree / "include").string() + "/", "/usr/include/", "/usr/lib/gcc/",
+         "/usr/local/include/"});
     if (!unexpected.empty()) {
       std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
                         "the standard library: rejected.\n";

@@ -20,10 +20,13 @@
 //
 // Time: each part's build and each part's grading have their own limit, and
 // the whole submission a budget (autograder/README.md has the numbers).
+#include <set>
 #include <string>
+#include <vector>
 
 #include "grade_part.h"
 #include "sandbox.h"
+#include "submission_files.h"
 
 namespace pt::grade {
 
@@ -46,5 +49,19 @@ struct SubmissionOptions {
 // submission included), 2 when it could not be (no kit, a report that cannot
 // be written).
 int grade_submission(const SubmissionOptions& options);
+
+// The pieces `pt-grade check-submission` (check_submission.h) shares with the
+// grader, so that a student sees the grader's own verdicts and messages:
+//
+// step 3 for one task file: "" when it may be built, else why not (the
+// report's text); the instructor's source flags go to *flags.
+std::string intake_rejection(const TaskFile& file, const std::set<std::string>& framework_headers, std::string* flags);
+// What a failed build printed that a student needs: the compiler's errors
+// first, paths relative to tree_dir, ninja's progress left out.
+std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines = 40);
+// The files the compiler opened for objects whose path holds object_marker
+// (ninja's dependency record in build_dir) that lie in none of `allowed`.
+std::vector<std::string> unexpected_dependencies(const std::string& build_dir, const std::string& object_marker,
+                                                 const std::vector<std::string>& allowed);
 
 }  // namespace pt::grade

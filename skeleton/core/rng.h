@@ -1,7 +1,7 @@
 #pragma once
 // One random generator per (pixel, pass): a PCG32 stream whose seed mixes the
 // render seed with the pixel and pass, so that an image does not depend on the
-// thread count or on the order tiles are rendered in (DESIGN section 5).
+// thread count or on the order tiles are rendered in.
 #include <cstdint>
 #include <pcg_random.hpp>
 

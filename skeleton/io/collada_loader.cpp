@@ -1,7 +1,8 @@
 // The COLLADA importer: walks the visual scene's node graph and adds its
 // meshes, CGL spheres, lights and camera to a Scene. Every place a value comes
 // from is named in errors and warnings by its element path; what the
-// framework does not model (DESIGN section 1) is approximated with a warning.
+// framework does not model (materials beyond diffuse and emission, ...) is
+// approximated with a warning.
 #include "io/collada_loader.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // Shared set-up of the Part 4 graded tests.
 //
 // Significance: every graded test may fail a correct solution with
-// probability below 1e-4 (DESIGN section 6). Each test spends
+// probability below 1e-4 (the README: How you are graded). Each test spends
 // kAlphaTest = 1e-5 of it, split over its m statistical checks by Šidák
 // (stats::sidak_alpha(kAlphaTest, m)); the factor 10 to the budget absorbs the
 // error of the large-sample approximations (central limit theorem, delta

@@ -15,7 +15,7 @@
 // test_russian_roulette.cpp gives the variance of the sum), so the standard
 // error is below 0.12% of the mean and a check at alpha ~ 1e-6 (|t| ~ 5)
 // resolves biases of 0.6%. Power against the mutants of
-// tests/mutants/part4.cmake: one level too deep multiplies the depth-1 value
+// the mutant gallery's part 4 (instructors' copies): one level too deep multiplies the depth-1 value
 // of at_least_one_bounce_radiance by 1 + a (+30% or more); emission at every
 // vertex, a missing cos (weight 2a on average) or a pdf divided twice (weight
 // a pi / cos) change every value with a bounce by more than 30%; keeping the

@@ -22,7 +22,7 @@
 //
 // The checks share alpha by Sidak's correction (statistics.h): a correct
 // render fails with probability below alpha whatever the scene (the tests use
-// alpha = 1e-5, ten times below the 1e-4 budget of DESIGN section 6, as the
+// alpha = 1e-5, ten times below the 1e-4 budget per graded test, as the
 // statistics toolkit does, for the normal approximations in the far tail).
 #include <gtest/gtest.h>
 

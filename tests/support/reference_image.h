@@ -4,7 +4,8 @@
 //   <name>_sd.exr   the per-sample standard deviation of each pixel and channel
 //                   (half, ZIP): an n-spp render's pixel has sd sd / sqrt(n)
 //   <name>.json     the sidecar: settings, seeds, time, the commands, the git
-//                   state of reference/, the error model's constants and their
+//                   state of the solution (instructors' copies only: the
+//                   student release leaves it out), the error model's constants and their
 //                   validation (written by pt-reference-images)
 //   <name>.png      a preview for people
 #include <string>

@@ -29,7 +29,7 @@
 // chi-square test's tables and picture, not only the failing ones'.
 //
 // How the suites use it: each graded test is allowed a false-failure
-// probability below 1e-4 (DESIGN section 6). A test that makes m statistical
+// probability below 1e-4 (the README: How you are graded). A test that makes m statistical
 // checks gives each one sidak_alpha(alpha_test, m), so that a correct solution
 // fails the whole test with probability at most alpha_test. The tests take
 // alpha_test = 1e-5, ten times below the budget, so that the large-sample

@@ -6,24 +6,44 @@
 //                      and one when it ends, written to descriptor V, each
 //                      bound to the key read from descriptor S
 //   --pt_seed=N        seed offset for statistical tests (see seed.h)
+//   --pt_test_timeout=S  the time limit of one graded test (default 20 s, as
+//                      pt-grade's; 0: none). A graded test still running
+//                      then is named with its task and a short stack of the
+//                      thread running it, and the binary exits with status
+//                      124, so that a hang never waits forever. Under pt-grade
+//                      (--pt_channel) the diagnosis comes a little before the
+//                      limit and pt-grade, on its own clock, ends the run: the
+//                      verdict stays the grader's.
 //
 // The key reaches this program on a pipe, never in argv or the environment
 // (which a static initializer can read), and is taken from .preinit_array:
 // the dynamic loader runs those entries before every static initializer, and
 // this file is linked first, so no code of a task file runs while the key is
-// still in its descriptor. What that does and does not stop is in
-// autograder/README.md.
+// still in its descriptor. What that does and does not stop is in the
+// grader's threat model (the README of pt-grade, in instructors' copies).
 #include <dirent.h>
+#include <dlfcn.h>
+#include <execinfo.h>
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cxxabi.h>
+
+#include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -119,6 +139,121 @@ std::string failure_messages(const testing::TestResult& r) {
   return messages;
 }
 
+// The per-test time limit. The thread that runs the tests is asked for its
+// stack with a signal (its handler only records the return addresses: no
+// allocation, no locks); the watchdog thread names them.
+constexpr int kStackSignal = SIGURG;  // ignored by default, used by nothing here
+constexpr int kMaxFrames = 48;
+void* g_frames[kMaxFrames];
+std::atomic<int> g_frame_count{-1};
+
+void record_stack(int) { g_frame_count.store(backtrace(g_frames, kMaxFrames)); }
+
+std::string function_name(void* address) {
+  Dl_info info{};
+  if (!dladdr(address, &info)) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%p", address);
+    return buf;
+  }
+  if (!info.dli_sname) {
+    char buf[160];
+    const auto base = reinterpret_cast<uintptr_t>(info.dli_fbase);
+    std::snprintf(buf, sizeof buf, "%s+0x%zx", info.dli_fname ? info.dli_fname : "?",
+                  static_cast<size_t>(reinterpret_cast<uintptr_t>(address) - base - 1));
+    return buf;
+  }
+  int status = 1;
+  char* demangled = abi::__cxa_demangle(info.dli_sname, nullptr, nullptr, &status);
+  std::string name = status == 0 && demangled ? demangled : info.dli_sname;
+  std::free(demangled);
+  return name.size() > 200 ? name.substr(0, 200) + "..." : name;
+}
+
+// Up to 8 frames of the test thread, innermost first, without the frames of
+// the signal itself.
+std::string short_stack(pthread_t thread) {
+  g_frame_count.store(-1);
+  if (pthread_kill(thread, kStackSignal) != 0) return "  (no stack: the signal could not be sent)\n";
+  for (int i = 0; i < 100 && g_frame_count.load() < 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const int n = g_frame_count.load();
+  if (n <= 0) return "  (no stack: the test thread did not answer)\n";
+  std::string out;
+  int shown = 0;
+  for (int i = 2; i < n && shown < 8; ++i, ++shown) out += "  #" + std::to_string(shown) + " " + function_name(g_frames[i]) + "\n";
+  out += "  (an address FILE+0x.. names a function: addr2line -f -C -e FILE 0x..)\n";
+  return out;
+}
+
+class Watchdog {
+ public:
+  Watchdog(double limit_seconds, bool under_grader)
+      : limit_(limit_seconds), under_grader_(under_grader), tests_thread_(pthread_self()) {
+    struct sigaction sa {};
+    sa.sa_handler = record_stack;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(kStackSignal, &sa, nullptr);
+    void* warm[1];
+    backtrace(warm, 1);  // loads the unwinder now, not in the signal handler
+    thread_ = std::thread([this] { watch(); });
+    thread_.detach();  // it never outlives a hang, and never stops an exit
+  }
+
+  void start(const std::string& name, const std::string& task) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    name_ = name;
+    task_ = task;
+    ++generation_;
+    started_ = std::chrono::steady_clock::now();
+    running_ = true;
+    wake_.notify_all();
+  }
+  void end() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    running_ = false;
+    ++generation_;
+  }
+
+ private:
+  void watch() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [this] { return running_; });
+      const long generation = generation_;
+      // Under pt-grade: the diagnosis before pt-grade's own limit ends the run.
+      const double at = under_grader_ ? limit_ - std::min(2.0, limit_ / 10) : limit_;
+      const auto when = started_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(at));
+      if (wake_.wait_until(lock, when, [&] { return generation_ != generation; })) continue;
+      const std::string name = name_, task = task_;
+      lock.unlock();
+      char head[400];
+      std::snprintf(head, sizeof head, "[  TIMEOUT ] %s (%s) still running after %.0f s%s; the test thread is in:\n",
+                    name.c_str(), task.c_str(), at, under_grader_ ? "" : " (the limit per test): stopped");
+      const std::string text = head + short_stack(tests_thread_);
+      std::fflush(stdout);
+      write_all(STDERR_FILENO, text);
+      if (!under_grader_) std::_Exit(124);
+      lock.lock();
+      wake_.wait(lock, [&] { return generation_ != generation; });  // the grader ends the run
+    }
+  }
+
+  const double limit_;
+  const bool under_grader_;
+  const pthread_t tests_thread_;
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::string name_, task_;
+  long generation_ = 0;
+  bool running_ = false;
+  std::chrono::steady_clock::time_point started_;
+};
+
+Watchdog* g_watchdog = nullptr;  // graded tests only: the framework's and library's own tests run as long as they need
+
 // Records the grading properties of each test (for --gtest_output) and reports
 // its start and its end on the channel.
 class GradingListener : public testing::EmptyTestEventListener {
@@ -129,11 +264,13 @@ class GradingListener : public testing::EmptyTestEventListener {
       testing::Test::RecordProperty("task", g->task);
       testing::Test::RecordProperty("points", std::to_string(g->points));
       testing::Test::RecordProperty("visibility", g->visibility == pt::grading::Visible ? "visible" : "hidden");
+      if (g_watchdog) g_watchdog->start(name, g->task);
     }
     report({{"start", name}});
   }
 
   void OnTestEnd(const testing::TestInfo& info) override {
+    if (g_watchdog) g_watchdog->end();
     const testing::TestResult& r = *info.result();
     report({{"end", std::string(info.test_suite_name()) + "." + info.name()},
             {"passed", r.Passed()},
@@ -148,13 +285,16 @@ class GradingListener : public testing::EmptyTestEventListener {
 int main(int argc, char** argv) {
   const int threads = running_threads();
   testing::InitGoogleTest(&argc, argv);
+  double test_timeout = 20;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--pt_list_graded") == 0) {
       for (const auto& t : pt::grading::registry()) std::cout << describe(t).dump() << "\n";
       return 0;
     }
     if (std::strncmp(argv[i], "--pt_seed=", 10) == 0) pt::test::set_seed_offset(std::strtoull(argv[i] + 10, nullptr, 10));
+    if (std::strncmp(argv[i], "--pt_test_timeout=", 18) == 0) test_timeout = std::strtod(argv[i] + 18, nullptr);
   }
+  if (test_timeout > 0 && !pt::grading::registry().empty()) g_watchdog = new Watchdog(test_timeout, g_channel_fd >= 0);
   report({{"hello", {{"threads", threads}}}});
   testing::UnitTest::GetInstance()->listeners().Append(new GradingListener);
   const int status = RUN_ALL_TESTS();

@@ -18,7 +18,13 @@
 //    idiom (the price of not flagging every loop header);
 //  * any file but the handouts names a hidden test (Suite.Name, or a Name of
 //    10 characters or more): the handouts name and describe every hidden test
-//    on purpose (issue 8), everything else must not.
+//    on purpose (issue 8), everything else must not;
+//  * what a student reads (the documents, the framework's headers, the task
+//    files, the visible tests and their support) names a path of the course's
+//    folders that the release does not hold (a README left behind by a move,
+//    `reference/`, DESIGN.md), with the file and line (issue 20);
+//  * a prebuilt library keeps a local symbol (a helper's name says how the
+//    solution works: strip -x), or an image's sidecar keeps a commit hash.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -31,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "command.h"
 #include "manifest.h"
 
 namespace {
@@ -69,6 +76,79 @@ std::vector<std::string> lines_of(const std::string& text) {
   std::istringstream in(text);
   for (std::string l; std::getline(in, l);) out.push_back(l);
   return out;
+}
+
+// What a student reads: a path in it must be one the release holds.
+bool read_by_students(const std::string& rel) {
+  const std::string ext = fs::path(rel).extension().string();
+  if (ext == ".md") return true;
+  for (const char* dir : {"skeleton/", "tasks/", "tests/support/", "tests/part"})
+    if (rel.rfind(dir, 0) == 0 && (ext == ".h" || ext == ".cpp")) return true;
+  return false;
+}
+
+// Paths under the course's top folders that `text` names and `release` does
+// not hold. Placeholders (partN, <scene>, globs) are not paths.
+std::vector<std::string> missing_paths(const std::string& rel, const std::string& text, const fs::path& release) {
+  static const std::regex path(
+      R"((^|[^A-Za-z0-9_./-])((skeleton|tasks|tests|scenes|handouts|prebuilt|tools|autograder|docs|reference|build)/[A-Za-z0-9_./-]*))");
+  static const std::regex citation(R"(([A-Za-z0-9_]+\.(cpp|h)):([0-9]+): Failure)");
+  std::vector<std::string> found;
+  int n = 0;
+  for (const auto& line : lines_of(text)) {
+    ++n;
+    // A failure quoted in a document: its file:line must be an assertion.
+    std::smatch m;
+    if (std::regex_search(line, m, citation)) {
+      const std::string cited = m[1], at = m[3];
+      bool asserts = false, seen = false;
+      for (const auto& e : fs::recursive_directory_iterator(release / "tests")) {
+        if (e.path().filename() != cited) continue;
+        seen = true;
+        const auto lines = lines_of(read_file(e.path()));
+        const size_t k = std::stoul(at);
+        asserts = asserts || (k >= 1 && k <= lines.size() && std::regex_search(lines[k - 1], std::regex("ASSERT|EXPECT|FAIL")));
+      }
+      if (!seen) found.push_back(rel + ":" + std::to_string(n) + ": quotes " + cited + ", which the release does not hold");
+      else if (!asserts)
+        found.push_back(rel + ":" + std::to_string(n) + ": quotes " + cited + ":" + at + ", which is not an assertion");
+    }
+    if (line.find("DESIGN.md") != std::string::npos || line.find("DESIGN section") != std::string::npos)
+      found.push_back(rel + ":" + std::to_string(n) + ": names DESIGN.md, which the release does not hold");
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), path); it != std::sregex_iterator(); ++it) {
+      std::string p = (*it)[2];
+      const size_t end = (*it).position(2) + p.size();
+      while (!p.empty() && (p.back() == '.' || p.back() == '/' || p.back() == '-')) p.pop_back();
+      if (p.rfind("build/", 0) == 0) continue;  // what a build writes
+      if (end < line.size() && std::string("<*{$").find(line[end]) != std::string::npos) continue;
+      if (std::regex_search(p, std::regex(R"(partN|N_|XXX|\.\.\.|/[a-z]\.[a-z]+$)"))) continue;  // x.json: an example
+      // A path is a file with an extension or a folder written with its
+      // slash ("intersection tests/ray" is neither).
+      const bool folder = end < line.size() && line[end] == '/';
+      if (fs::path(p).extension().empty() && !folder && (*it)[2].str().back() != '/') continue;
+      if (line.find("cannot open") != std::string::npos) continue;  // an error message shown on purpose
+      // Relative to the release, or to the document's own folder.
+      if (!fs::exists(release / p) && !fs::exists(release / fs::path(rel).parent_path() / p))
+        found.push_back(rel + ":" + std::to_string(n) + ": names " + p + ", which the release does not hold");
+    }
+  }
+  return found;
+}
+
+// Local symbols (nm's lower-case types) other than the assembler's own
+// labels (.L...), in each member of an archive.
+std::vector<std::string> local_symbols(const fs::path& archive) {
+  std::string out;
+  pt::grade::run_command({"nm", "--defined-only", archive.string()}, &out);
+  std::vector<std::string> found;
+  for (const auto& line : lines_of(out)) {
+    std::istringstream in(line);
+    std::string address, type, name;
+    if (!(in >> address >> type >> name) || type.size() != 1) continue;
+    if (std::string("tdbrsg").find(type[0]) == std::string::npos || name.rfind(".L", 0) == 0) continue;
+    found.push_back(name);
+  }
+  return found;
 }
 
 }  // namespace
@@ -167,6 +247,17 @@ int main(int argc, char** argv) {
       for (const auto& [text, where] : raw)
         if (text.size() >= 24 && bytes.find(text) != std::string::npos)
           findings.push_back(rel + ": holds the text of " + where);
+    }
+    if (is_text(bytes) && read_by_students(rel))
+      for (const auto& m : missing_paths(rel, bytes, release)) findings.push_back(m);
+    if (rel.rfind("scenes/reference/", 0) == 0 && fs::path(rel).extension() == ".json" &&
+        std::regex_search(bytes, std::regex("[0-9a-f]{40}")))
+      findings.push_back(rel + ": holds a commit hash (the instructor's repository's)");
+    if (rel.rfind("prebuilt/", 0) == 0 && fs::path(rel).extension() == ".a") {
+      const auto locals = local_symbols(path);
+      if (!locals.empty())
+        findings.push_back(rel + ": keeps " + std::to_string(locals.size()) + " local symbol(s), e.g. " + locals[0] +
+                           " (strip -x)");
     }
     if (rel.rfind("handouts/", 0) == 0) continue;
     for (const auto& h : hidden)

@@ -5,12 +5,21 @@
 #  3. run the set-up commands of its own README.md, exactly as written;
 #  4. the untouched stubs grade 0, every graded test failing with the name of
 #     its task (pt-grade check-stubs, per part);
-#  5. the reference's task files, copied in as a student's, earn every visible
-#     point (pt-grade run --json, then expect_score.cmake).
+#  5. with the reference's task files copied in as a student's: the commands
+#     of the README's "Working on a part" (build, tests, score, render, the
+#     solution standing in, the comparison with its relMSE bound) and "Before
+#     you submit", exactly as written; every visible point (pt-grade run --json,
+#     expect_score.cmake), and check-submission says READY with each part's
+#     hidden points listed as not run;
+#  6. check-submission on what the grader would refuse: a task file with a
+#     Boost header (the grader's rejection message), an edited and an added
+#     framework file (each named), both NOT READY.
 # Usage: test_release.sh ARCHIVE CHECKOUT RELEASE_CHECK MANIFEST WORKDIR
 set -euo pipefail
 archive=$1 source=$2 release_check=$3 manifest=$4 work=$5
 here=$(cd "$(dirname "$0")" && pwd)
+seconds() { date +%s; }
+t0=$(seconds)
 
 rm -rf "$work"
 mkdir -p "$work"
@@ -20,14 +29,23 @@ cd "$work/student-release"
 echo "== 2. no solution in the release"
 "$release_check" --release . --source "$source" --manifest "$manifest"
 
+# run_section HEADING: every command of every ```sh block under '## HEADING'
+# (up to the next '## '), comments off, each run as written; fails at the first
+# that fails.
+run_section() {
+  local cmds
+  cmds=$(awk -v h="## $1" '$0==h{s=1;next} s&&/^## /{exit} s&&/^ *```sh/{b=1;next} b&&/^ *```/{b=0;next} s&&b{print}' README.md |
+         sed 's/^[[:space:]]*//; s/[[:space:]]#.*$//; /^#/d' | sed '/^[[:space:]]*$/d')
+  [ -n "$cmds" ] || { echo "README.md has no commands under '## $1'"; exit 1; }
+  while IFS= read -r cmd; do
+    echo "\$ $cmd"
+    bash -c "$cmd"
+  done <<< "$cmds"
+}
+
 echo "== 3. the README's set-up commands"
-# The fenced block under '## Set up': each line that is a command (comments off).
-setup=$(awk '/^## Set up/{s=1} s&&/^```sh/{b=1;next} b&&/^```/{exit} b{print}' README.md | sed 's/[[:space:]]*#.*$//' | sed '/^[[:space:]]*$/d')
-[ -n "$setup" ] || { echo "README.md has no '## Set up' block"; exit 1; }
-while IFS= read -r cmd; do
-  echo "\$ $cmd"
-  bash -c "$cmd"
-done <<< "$setup"
+run_section "Set up (Debian 12 or Ubuntu 22.04+)"
+echo "first build and test of the release: $(( $(seconds) - t0 )) s"
 
 grade=./build/autograder/pt-grade
 echo "== 4. the stubs grade 0, naming their tasks"
@@ -35,9 +53,38 @@ for n in 1 2 3 4 5; do
   "$grade" check-stubs --part "$n" "build/tests/part${n}_tests"
 done
 
-echo "== 5. the reference's task files earn every visible point"
+echo "== 5. the reference's task files, with the README's commands"
 cp "$source"/reference/part*.cpp tasks/
-cmake --build --preset default
+run_section "Working on a part"
 "$grade" run --json reference-results.json
 cmake -DRESULTS=reference-results.json -P "$here/expect_score.cmake"
-echo "release OK"
+run_section "Before you submit" | tee check.out
+grep -q '^READY' check.out || { echo "check-submission did not say READY"; exit 1; }
+for n in 1 2 3 4 5; do
+  grep -Eq "^$n +([0-9]+) / \\1 +([0-9.]+) / \\2 .*hidden: [0-9]+ tests, [0-9.]+ points? not run here" check.out ||
+    { echo "part $n: not every visible point, or its hidden points not listed as not run"; exit 1; }
+done
+
+echo "== 6. check-submission on what the grader refuses"
+expect_not_ready() {  # expect_not_ready WHAT REGEX...: check-submission exits 1 and prints each REGEX
+  local what=$1; shift
+  if "$grade" check-submission > "$what.out" 2>&1; then cat "$what.out"; echo "$what: check-submission said ready"; exit 1; fi
+  for re in "$@"; do
+    grep -Eq -- "$re" "$what.out" || { cat "$what.out"; echo "$what: no line matches: $re"; exit 1; }
+  done
+  echo "$what: NOT READY, as the grader would have it"
+}
+part5=$(ls tasks/part5_*.cpp)
+cp "$part5" part5.saved
+{ echo '#include <boost/math/special_functions/gamma.hpp>'; cat part5.saved; } > "$part5"
+name5=$(basename "$part5")  # the grader names a file as it was submitted
+expect_not_ready boost_header "$name5 rejected before building:" "$name5:1: #include <boost/math/special_functions/gamma.hpp>: " \
+                 "^NOT READY" "part 5: rejected before building"
+cp part5.saved "$part5"
+cp skeleton/README.md skeleton.saved
+echo "a student's note" >> skeleton/README.md
+printf 'inline int my_helper() { return 1; }\n' > skeleton/core/my_helpers.h
+expect_not_ready edited_skeleton "skeleton/README.md: edited" "skeleton/core/my_helpers.h: added" "^NOT READY"
+cp skeleton.saved skeleton/README.md
+rm skeleton/core/my_helpers.h
+echo "release OK ($(( $(seconds) - t0 )) s)"

@@ -1,0 +1,223 @@
+#include "check_submission.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "manifest.h"
+#include "submission.h"
+#include "submission_files.h"
+
+namespace pt::grade {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json read_facts(const fs::path& source) {
+  const fs::path path = source / "prebuilt" / "release.json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + " not found: check-submission works in the student release only "
+                                                    "(in a course checkout, build the grader-kit and use pt-grade submission)");
+  return json::parse(in);
+}
+
+void heading(const char* text) { std::printf("\n== %s\n", text); }
+
+std::string indented(const std::string& text) { return folded(text, "   "); }
+
+// SHA-256 of each file by coreutils' sha256sum (one run for all of them);
+// a file that cannot be read is left out.
+std::map<std::string, std::string> sha256_of(const fs::path& source, const std::vector<std::string>& files) {
+  std::map<std::string, std::string> hashes;
+  std::vector<std::string> argv{"sha256sum", "--"};
+  for (const auto& f : files)
+    if (fs::is_regular_file(source / f)) argv.push_back((source / f).string());
+  if (argv.size() == 2) return hashes;
+  std::string out;
+  run_command(argv, &out);
+  std::istringstream in(out);
+  const std::string prefix = source.string() + "/";
+  for (std::string line; std::getline(in, line);) {
+    if (line.size() < 67 || line[64] != ' ') continue;
+    std::string path = line.substr(66);
+    if (path.rfind(prefix, 0) == 0) path = path.substr(prefix.size());
+    hashes[path] = line.substr(0, 64);
+  }
+  return hashes;
+}
+
+// Step 3: every shipped file the grader has its own copy of, as shipped; and
+// nothing added where the build globs for sources.
+std::vector<std::string> edited_files(const fs::path& source, const json& shipped) {
+  std::vector<std::string> names, problems;
+  for (const auto& [name, hash] : shipped.items()) names.push_back(name);
+  const auto now = sha256_of(source, names);
+  for (const auto& [name, hash] : shipped.items()) {
+    auto it = now.find(name);
+    if (it == now.end())
+      problems.push_back(name + ": missing");
+    else if (it->second != hash.get<std::string>())
+      problems.push_back(name + ": edited");
+  }
+  for (const char* dir : {"skeleton", "tests"}) {
+    if (!fs::is_directory(source / dir)) continue;
+    for (const auto& e : fs::recursive_directory_iterator(source / dir))
+      if (e.is_regular_file() && !shipped.contains(fs::relative(e.path(), source).generic_string()))
+        problems.push_back(fs::relative(e.path(), source).generic_string() + ": added");
+  }
+  return problems;
+}
+
+}  // namespace
+
+std::map<int, HiddenNotRun> hidden_not_run_in(const std::string& source_dir) {
+  std::map<int, HiddenNotRun> hidden;
+  std::ifstream in(fs::path(source_dir) / "prebuilt" / "release.json");
+  if (!in) return hidden;
+  const json facts = json::parse(in);
+  for (const auto& [part, h] : facts.at("hidden").items())
+    hidden[std::stoi(part)] = {h.at("tests").get<int>(), h.at("hundredths_of_points").get<int>() / 100.0};
+  return hidden;
+}
+
+int check_submission(const CheckOptions& opt) {
+  const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
+  const json facts = read_facts(source);
+  if (!fs::is_regular_file(build / "CMakeCache.txt")) {
+    std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
+                 build.c_str());
+    return 2;
+  }
+  std::map<int, std::string> expected;
+  for (const auto& [part, name] : facts.at("task_files").items()) expected[std::stoi(part)] = name.get<std::string>();
+  std::set<std::string> headers;
+  for (const auto& [name, hash] : facts.at("files").items())
+    if (name.rfind("skeleton/", 0) == 0 && fs::path(name).extension() == ".h") headers.insert(name.substr(9));
+  std::vector<std::string> problems;  // each a way the grader's result will differ from this one
+  std::map<int, std::string> not_graded;  // part -> the grader's reason
+
+  std::printf("pt-grade check-submission %s: what the grader will do with these files.\n", opt.tasks.c_str());
+  heading("1. The files, taken as the grader takes them");
+  const Submission sub = read_submission(opt.tasks, expected);
+  for (const auto& n : sub.notes) std::fputs(indented(n).c_str(), stdout);
+  if (!sub.problems.empty()) {
+    std::string why = "submission rejected before building:";
+    for (const auto& p : sub.problems) why += "\n  " + p;
+    std::fputs(indented(why).c_str(), stdout);
+    std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
+    return 1;
+  }
+  std::set<int> submitted;
+  for (const auto& f : sub.files) {
+    std::printf("   %s: part %d\n", f.where.c_str(), f.part);
+    submitted.insert(f.part);
+    // Step 4 builds the release's tasks/: a submission elsewhere must be that.
+    std::ifstream built(source / "tasks" / f.name, std::ios::binary);
+    std::ostringstream text;
+    text << built.rdbuf();
+    if (!f.too_large && text.str() != f.text)
+      problems.push_back(f.where + " is not tasks/" + f.name + ", which is what steps 4 and 5 build and test");
+  }
+  for (const auto& [part, name] : expected)
+    if (!submitted.count(part)) not_graded[part] = "not submitted: no " + name + " in the submission";
+
+  heading("2. What each file includes (the grader's allowlist)");
+  std::vector<const TaskFile*> buildable;
+  for (const auto& f : sub.files) {
+    const std::string rejected = intake_rejection(f, headers, nullptr);
+    if (rejected.empty()) {
+      std::printf("   %s: accepted\n", f.where.c_str());
+      buildable.push_back(&f);
+      continue;
+    }
+    std::fputs(indented(rejected).c_str(), stdout);
+    not_graded[f.part] = rejected;
+    problems.push_back("part " + std::to_string(f.part) + ": rejected before building (step 2)");
+  }
+
+  heading("3. The files the grader has its own copy of");
+  const auto edits = edited_files(source, facts.at("files"));
+  if (edits.empty()) std::printf("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
+  for (const auto& e : edits) std::printf("   %s\n", e.c_str());
+  if (!edits.empty()) {
+    std::fputs(indented("The grader builds your task files with its own copy of these files, not yours: a task file "
+                        "that needs your change will not build there, or behave as it does here. Undo the change "
+                        "(e.g. from the release's tarball) and move what you need into your task file.")
+                   .c_str(),
+               stdout);
+    problems.push_back(std::to_string(edits.size()) + " file(s) the grader has its own copy of differ (step 3)");
+  }
+
+  heading("4. Each part built on its own, as the grader builds it");
+  std::map<int, std::string> binaries;
+  for (const TaskFile* f : buildable) {
+    const std::string target = "part" + std::to_string(f->part) + "_tests";
+    std::printf("   $ cmake --build %s --target %s\n", opt.build_dir.c_str(), target.c_str());
+    std::fflush(stdout);
+    std::string out;
+    const auto start = std::chrono::steady_clock::now();
+    const int rc = run_command({"cmake", "--build", build.string(), "--target", target}, &out);
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (rc != 0) {
+      const std::string why = f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n" +
+                              compiler_errors(out, source.string());
+      std::fputs(indented(why).c_str(), stdout);
+      not_graded[f->part] = why;
+      problems.push_back("part " + std::to_string(f->part) + ": does not build (step 4)");
+      continue;
+    }
+    const auto unexpected =
+        unexpected_dependencies(build.string(), "pt_part" + std::to_string(f->part) + "_student.dir/",
+                                {(source / "tasks").string() + "/", (source / "skeleton").string() + "/",
+                                 "/usr/include/", "/usr/lib/gcc/", "/usr/local/include/"});
+    if (!unexpected.empty()) {
+      std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
+                        "the standard library: rejected.\n";
+      for (const auto& u : unexpected) why += "  " + u + "\n";
+      std::fputs(indented(why).c_str(), stdout);
+      not_graded[f->part] = why;
+      problems.push_back("part " + std::to_string(f->part) + ": reads files the grader refuses (step 4)");
+      continue;
+    }
+    std::printf("   part %d: built in %.0f s\n", f->part, std::round(took));
+    binaries[f->part] = (build / "tests" / target).string();
+  }
+
+  heading("5. The visible tests");
+  const fs::path manifest_path = build / "tests" / "graded_manifest.json";
+  if (!fs::is_regular_file(manifest_path)) {
+    std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
+    return 2;
+  }
+  const Manifest manifest = read_manifest(manifest_path.string());
+  Report report;
+  report.hidden_not_run = hidden_not_run_in(source.string());
+  Sandbox sandbox(opt.sandbox);
+  for (const auto& [part, tests] : manifest.parts) {
+    if (auto it = binaries.find(part); it != binaries.end())
+      report.parts.push_back(grade_binary(part, it->second, tests, opt.limits, sandbox, it->second + ".grade.log"));
+    else
+      report.parts.push_back(pending_part(part, tests, not_graded.count(part) ? not_graded[part] : "not built"));
+  }
+  report.complete = true;
+  print_report(report, false);
+
+  if (problems.empty()) {
+    std::printf("\nREADY: the grader will build and run these files as this check did; it also runs the hidden "
+                "tests, which this release does not have.\n");
+    return 0;
+  }
+  std::printf("\nNOT READY: the grader's result will differ from this check's:\n");
+  for (const auto& p : problems) std::printf("  - %s\n", p.c_str());
+  return 1;
+}
+
+}  // namespace pt::grade
