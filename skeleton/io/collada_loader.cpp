@@ -70,17 +70,17 @@ class ColladaLoader {
 
     if (scene_.primitives.empty())
       doc_.fail(visual_scene, "the visual scene has no geometry (no mesh or CGL sphere is instanced)");
-    if (cameras_ == 0) {
-      doc_.warn(visual_scene, "no camera: using one that looks along -z at the scene's centre from 1.5x its "
-                              "bounding box's diagonal (the framing --course-camera gives)");
-      // The course's loader defaults to hfov 50, vfov 35.
-      Camera looking_down_z(Vec3(0.0), Vec3(0.0, 0.0, -1.0), Vec3(0.0, 1.0, 0.0), 50.0, 35.0);
-      RenderSettings defaults;
-      scene_.camera = course_camera(looking_down_z, scene_.bounds(), defaults.width, defaults.height);
-    } else if (degenerate_camera_) {
-      doc_.warn(degenerate_camera_, "a short <matrix> leaves the camera no position, view or up direction: using one "
-                                    "that looks along -z at the scene's centre from 1.5x its bounding box's diagonal");
-      RenderSettings defaults;
+    if (cameras_ == 0 || degenerate_camera_) {
+      const std::string framing = "using one that looks along -z at the scene's centre from 1.5x its bounding "
+                                  "box's diagonal";
+      if (cameras_ == 0) {
+        doc_.warn(visual_scene, "no camera: " + framing + " (the framing --course-camera gives)");
+        // The course's loader defaults to hfov 50, vfov 35.
+        scene_.camera = Camera(Vec3(0.0), Vec3(0.0, 0.0, -1.0), Vec3(0.0, 1.0, 0.0), 50.0, 35.0);
+      } else {
+        doc_.warn(degenerate_camera_, "a short <matrix> leaves the camera no position, view or up direction: " + framing);
+      }
+      RenderSettings defaults;  // the camera add_camera left looks along -z with the file's fovs
       scene_.camera = course_camera(scene_.camera, scene_.bounds(), defaults.width, defaults.height);
     }
     if (cameras_ > 1) {
@@ -327,11 +327,11 @@ class ColladaLoader {
     scene_.add_sphere(centre, r, bsdf);
   }
 
-  // A transformed point or vector, which must stay finite and at most 1e30.
   static bool usable(const Vec3& v) { return is_finite(v) && max_component(glm::abs(v)) <= kMaxMagnitude; }
 
+  // A transformed point or vector, which must stay finite and at most 1e30.
   Vec3 placed(XmlNode instance, const Vec3& v, const char* what) {
-    if (!is_finite(v) || max_component(glm::abs(v)) > kMaxMagnitude)
+    if (!usable(v))
       doc_.fail(instance, std::string("the node transforms put ") + what + " at " + format_vec(v) +
                               ", beyond 1e30");
     return v;
