@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config ccache
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libstb-dev libtinyexr-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libpugixml-dev libpcg-cpp-dev libarchive-dev zip

@@ -37,6 +37,7 @@
 #include "support/reference_check.h"
 #include "support/reference_image.h"
 #include "support/scene_library.h"
+#include "pt_source_dir.h"
 
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;

@@ -10,7 +10,11 @@ root=${PT_GRADESCOPE_ROOT:-/autograder}
 src="$root/source/pathtracer"
 cd "$src"
 ./setup.sh --deps-only
-cmake --preset default -DCMAKE_BUILD_TYPE=Release  # no debug information: a faster image build
+# The preset's build type (RelWithDebInfo), as in the student's build and the
+# instructor's: the kit compiled here is the kit the repository's tests grade
+# with, and a crash in the grading log has a backtrace with lines.
+cmake --preset default
 cmake --build --preset default --target grader-kit
+rm -rf "$src/build/ccache"  # a compiler cache, if setup.sh installed one: the image need not keep it
 chmod -R go-rwx "$src/reference"
 echo "grading kit ready: $src/build/grader-kit"

@@ -9,7 +9,13 @@ zip=$1 checkout=$2 work=$3
 export PT_GRADESCOPE_ROOT="$work/autograder"
 rm -rf "$work" && mkdir -p "$PT_GRADESCOPE_ROOT"/{source,submission,results}
 cmake -E chdir "$PT_GRADESCOPE_ROOT/source" cmake -E tar xf "$zip"
+# PT_CCACHE_DIR (set by ctest when the instructor's build uses ccache): the
+# kit's build from the zip compiles through the same cache.
+[ -n "${PT_CCACHE_DIR:-}" ] && CCACHE_DIR=$PT_CCACHE_DIR ccache -z > /dev/null
+t0=$(date +%s)
 bash "$PT_GRADESCOPE_ROOT/source/setup.sh"
+echo "setup.sh: $(( $(date +%s) - t0 )) s"
+[ -n "${PT_CCACHE_DIR:-}" ] && { echo "compiler cache:"; CCACHE_DIR=$PT_CCACHE_DIR ccache -s; }
 
 grade() {  # grade LABEL FILES...: one submission through run_autograder
   local label=$1; shift

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "io/collada_loader.h"
+#include "pt_source_dir.h"
 
 namespace pt {
 

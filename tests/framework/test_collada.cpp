@@ -12,6 +12,7 @@
 #include "geometry/sphere.h"
 #include "scene/course_camera.h"
 #include "io/scene_info.h"
+#include "pt_source_dir.h"
 
 namespace pt {
 namespace {

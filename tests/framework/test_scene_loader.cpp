@@ -12,6 +12,7 @@
 
 #include "geometry/sphere.h"
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 
 namespace fs = std::filesystem;
 

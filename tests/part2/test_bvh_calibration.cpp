@@ -7,6 +7,7 @@
 
 #include "io/obj_loader.h"
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 #include "support/bvh_checks.h"
 #include "support/part2_baseline.h"
 #include "support/part2_scenes.h"

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 
 namespace pt::library {
 

@@ -14,6 +14,7 @@
 #include "app/viewer_inspect.h"
 #include "app/viewer_server.h"
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 
 namespace pt::test {
 

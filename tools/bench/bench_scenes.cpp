@@ -7,6 +7,7 @@
 #include "core/rng.h"
 #include "io/obj_loader.h"
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 
 namespace pt::bench {
 

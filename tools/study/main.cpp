@@ -17,6 +17,7 @@
 #include "bench_scenes.h"
 #include "report.h"
 #include "io/scene_loader.h"
+#include "pt_source_dir.h"
 #include "study.h"
 
 namespace fs = std::filesystem;

@@ -1,10 +1,10 @@
-// Hostile: read the solution. PT_SOURCE_DIR (a compile definition every task
-// file sees) gives the grader's source tree; every task throws the text of the
-// reference file of this part, so it appears in the failure message of each
-// visible test, which the student is shown. The grading kit defines no
-// PT_SOURCE_DIR: there the attack guesses the instructor's checkout, as a
-// student who has seen the course's layout (or Gradescope's /autograder/source)
-// would; the gallery writes the real path in for the placeholder below.
+// Hostile: read the solution. The attack knows where the grader's source tree
+// is (PT_SOURCE_DIR, when a build defines it; otherwise a guess of the
+// instructor's checkout, as a student who has seen the course's layout or
+// Gradescope's /autograder/source would: the gallery writes the real path in
+// for the placeholder below, the worst case). Every task throws the text of
+// the reference file of this part, so it would appear in the failure message
+// of each visible test, which the student is shown.
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
