@@ -14,11 +14,6 @@ namespace pt {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-double LibraryReference::sd_relmse(double n) const {
-  const double k = 1 / n + 1 / reference_samples;
-  return std::sqrt(c2 * k * k + c3 / (n * n * n));
-}
-
 namespace {
 json read_json(const fs::path& path) {
   std::ifstream in(path);
@@ -51,10 +46,10 @@ std::optional<LibraryReference> find_library_reference(const std::string& scene_
     ref.settings.rr_continue_prob = render.value("rr", ref.settings.rr_continue_prob);
     ref.image = read_exr((dir / "reference" / (ref.name + ".exr")).string());
     const json model = read_json(dir / "reference" / (ref.name + ".json")).at("error_model");
-    ref.a = model.at("a").get<double>();
-    ref.c2 = model.at("c2").get<double>();
-    ref.c3 = model.at("c3").get<double>();
-    ref.reference_samples = model.at("reference_samples").get<double>();
+    ref.model.a = model.at("a").get<double>();
+    ref.model.c2 = model.at("c2").get<double>();
+    ref.model.c3 = model.at("c3").get<double>();
+    ref.model.reference_samples = model.at("reference_samples").get<int>();
     return ref;
   }
   return std::nullopt;

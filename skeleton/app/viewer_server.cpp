@@ -181,7 +181,7 @@ struct ViewerServer::Impl {
     std::lock_guard<std::mutex> lock(mutex);
     const LibraryReference* ref = library_reference();
     if (!ref) return {{"available", false}, {"reason", library_error.empty() ? "this scene is not in the scene library (scenes/library.json)" : library_error}};
-    json j{{"available", true}, {"name", ref->name}, {"reference_samples", ref->reference_samples},
+    json j{{"available", true}, {"name", ref->name}, {"reference_samples", ref->model.reference_samples},
            {"library_settings", {{"width", ref->settings.width}, {"height", ref->settings.height},
                                  {"light_samples", ref->settings.ns_area_light}, {"max_depth", ref->settings.max_ray_depth},
                                  {"rr", ref->settings.rr_continue_prob}}}};
@@ -206,9 +206,9 @@ struct ViewerServer::Impl {
     j["rmse"] = e.rmse;
     j["spp"] = st.spp;
     if (st.spp > 0) {
-      j["expected_relmse"] = ref->expected_relmse(st.spp);
-      j["sd_relmse"] = ref->sd_relmse(st.spp);
-      j["bound_relmse"] = ref->expected_relmse(st.spp) + 5.08 * ref->sd_relmse(st.spp);  // the library test's z
+      j["expected_relmse"] = ref->model.expected(st.spp);
+      j["sd_relmse"] = ref->model.sd(st.spp);
+      j["bound_relmse"] = ref->model.bound(st.spp, kLibraryCheckZ);
     }
     return j;
   }

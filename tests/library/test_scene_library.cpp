@@ -19,6 +19,7 @@
 // with it.
 #include <gtest/gtest.h>
 
+#include "app/viewer_library.h"
 #include "support/reference_check.h"
 #include "support/reference_image.h"
 #include "support/scene_library.h"
@@ -44,6 +45,17 @@ Image scaled(const Image& img, double k) {
   Image out = img;
   for (Spectrum& p : out.pixels) p *= k;
   return out;
+}
+
+// The viewer (pathtracer --view) draws this test's bound for the scene in
+// view, with its z as a constant (it has no statistics library): the two must
+// agree to the two decimals the constant keeps.
+TEST(SceneLibraryBound, TheViewerDrawsTheSameBound) {
+  const Library lib = the_library();
+  const ReferenceImage ref = read_reference(lib.reference_dir, lib.scenes.front().name);
+  const double z = check_render(ref.mean, 16, ref, kAlpha).z_relmse;
+  EXPECT_NEAR(kLibraryCheckZ, z, 0.005) << "skeleton/app/viewer_library.h's kLibraryCheckZ against the library "
+                                        << "test's z (alpha " << kAlpha << " shared by its checks, Sidak)";
 }
 
 class SceneLibrary : public testing::TestWithParam<std::string> {};
