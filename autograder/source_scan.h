@@ -48,7 +48,7 @@ SourceScan scan_task_source(const std::string& text, const std::set<std::string>
 
 // A header of the C++17 standard library (<vector>, <cmath>, <math.h>, ...).
 bool is_standard_header(const std::string& name);
-// All of them (the kit's header probe, autograder/kit/header_probe.cpp,
+// All of them (the kit's header probe, autograder/header_probe.cpp,
 // includes each).
 const std::set<std::string>& standard_headers();
 

@@ -1,5 +1,5 @@
 // The compiler's own list of what a task file read, checked against what the
-// header probe (autograder/kit/header_probe.cpp) read on the same compiler:
+// header probe (autograder/header_probe.cpp) read on the same compiler:
 // a hidden #include the scanner could not see still shows up here.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -76,8 +76,8 @@ TEST_F(DependencyCheck, WithoutTheProbesRecordNothingPasses) {
 
 // The probe the kit compiles includes every header the intake allows.
 TEST(HeaderProbe, IncludesEveryHeaderTheIntakeAllows) {
-  std::ifstream in(std::string(PT_CHECKOUT) + "/autograder/kit/header_probe.cpp");
-  ASSERT_TRUE(in) << "autograder/kit/header_probe.cpp not found";
+  std::ifstream in(std::string(PT_CHECKOUT) + "/autograder/header_probe.cpp");
+  ASSERT_TRUE(in) << "autograder/header_probe.cpp not found";
   std::set<std::string> included;
   const std::regex include(R"(^#include <([^>]+)>)");
   for (std::string line; std::getline(in, line);)
