@@ -220,6 +220,14 @@ int grade_submission(const SubmissionOptions& opt) {
       buildable.clear();
     }
   }
+  if (!buildable.empty()) {
+    // The header probe (no student code) first, on its own clock, so that
+    // each part's build limit covers that part alone; a probe that does not
+    // build leaves every part's dependency check to say so.
+    std::string out;
+    if (kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", "pt_header_probe"}, 60, &out) != 0)
+      report.notes.push_back("the kit's header probe did not build:\n" + out.substr(0, 4000));
+  }
   for (const TaskFile* f : buildable) {
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     if (left <= 1) {
