@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
-#include <regex>
+#include <cstring>
 
 namespace pt::grade {
 
@@ -278,16 +278,71 @@ std::string code_only(const Cleaned& c) {
   return code;
 }
 
+size_t skip_space(const std::string& code, size_t i) {
+  while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
+  return i;
+}
+
+// Where an integer literal other than 0 ends when one starts at i (hex or
+// decimal, digit separators, suffixes), else npos.
+size_t nonzero_integer_end(const std::string& code, size_t i) {
+  size_t k = i;
+  bool nonzero = false;
+  if (code.compare(i, 2, "0x") == 0 || code.compare(i, 2, "0X") == 0) {
+    for (k = i + 2; k < code.size() && (std::isxdigit(static_cast<unsigned char>(code[k])) || code[k] == '\''); ++k)
+      nonzero = nonzero || (code[k] != '0' && code[k] != '\'');
+  } else if (k < code.size() && code[k] >= '1' && code[k] <= '9') {
+    nonzero = true;
+    while (k < code.size() && (std::isdigit(static_cast<unsigned char>(code[k])) || code[k] == '\'')) ++k;
+  }
+  if (!nonzero) return std::string::npos;
+  while (k < code.size() && std::strchr("uUlL", code[k]) && code[k] != '\0') ++k;
+  return k < code.size() && ident_char(code[k]) ? std::string::npos : k;
+}
+
+// After a cast's closing `)` or `>`: `(`, a cast to an integer type such
+// as `(uintptr_t)`, another `(`, then the literal.
+bool integer_follows(const std::string& code, size_t i) {
+  for (int step = 0; step < 3; ++step) {
+    i = skip_space(code, i);
+    if (i >= code.size() || code[i] != '(') break;
+    size_t k = skip_space(code, i + 1);
+    const size_t name = k;
+    if (k < code.size() && !std::isdigit(static_cast<unsigned char>(code[k])))
+      while (k < code.size() && (ident_char(code[k]) || code[k] == ':')) ++k;
+    k = skip_space(code, k);
+    i = k > name && k < code.size() && code[k] == ')' ? k + 1 : i + 1;  // a cast to an integer type, or a parenthesis
+  }
+  return nonzero_integer_end(code, skip_space(code, i)) != std::string::npos;
+}
+
 // An integer made a pointer: `(const char*)0x400000`,
 // `reinterpret_cast<uint8_t*>(4194304)`, through a cast to uintptr_t or not.
-// A null pointer written as 0 is not one.
+// A null pointer written as 0 is not one. Read by hand, in one pass: a
+// regular expression's matcher recurses per character, and a hostile
+// megabyte of spaces would overflow its stack.
 template <class Flag>
 void flag_address_casts(const Cleaned& c, Flag&& flag) {
-  static const std::regex cast(
-      R"((\*\s*\)|reinterpret_cast\s*<[^<>;]*\*\s*>)\s*\(?\s*(\(\s*[A-Za-z_:]+\s*\)\s*)?\(?\s*(0[xX][0-9a-fA-F']*[1-9a-fA-F][0-9a-fA-F']*|[1-9][0-9']*)[uUlL]*\b)");
   const std::string code = code_only(c);
-  for (auto it = std::sregex_iterator(code.begin(), code.end(), cast); it != std::sregex_iterator(); ++it)
-    flag(c.line_of[it->position(0)], "an integer made a pointer: reads memory at a fixed address");
+  for (size_t i = 0; i < code.size(); ++i) {
+    size_t after = std::string::npos;
+    if (code[i] == '*') {
+      const size_t close = skip_space(code, i + 1);
+      if (close < code.size() && code[close] == ')') after = close + 1;
+    } else if (code.compare(i, 16, "reinterpret_cast") == 0 && (i == 0 || !ident_char(code[i - 1]))) {
+      size_t open = skip_space(code, i + 16);
+      if (open < code.size() && code[open] == '<') {
+        const size_t close = code.find_first_of("<>;", open + 1);
+        if (close != std::string::npos && code[close] == '>') {
+          size_t last = close;
+          while (last > open && std::isspace(static_cast<unsigned char>(code[last - 1]))) --last;
+          if (code[last - 1] == '*') after = close + 1;
+        }
+      }
+    }
+    if (after != std::string::npos && integer_follows(code, after))
+      flag(c.line_of[i], "an integer made a pointer: reads memory at a fixed address");
+  }
 }
 
 // `##` builds names the scanner cannot see written out: `gra ## ding`, or a
@@ -313,23 +368,46 @@ void flag_pasted_names(const Cleaned& c, Flag&& flag) {
         return;
       }
   };
+  auto identifier_at = [&](size_t& k) {
+    const size_t from = k;
+    while (k < code.size() && ident_char(code[k])) ++k;
+    return code.substr(from, k - from);
+  };
   std::set<std::string> pasting;  // macros whose body pastes
-  static const std::regex define(R"((^|\n)[ \t]*(#|%:)[ \t]*define[ \t]+([A-Za-z_][A-Za-z_0-9]*)([^\n]*))");
-  for (auto it = std::sregex_iterator(code.begin(), code.end(), define); it != std::sregex_iterator(); ++it) {
-    const std::string body = (*it)[4];
-    const size_t paste = body.find("##");
-    if (paste == std::string::npos) continue;
-    pasting.insert((*it)[3]);
-    const size_t at = it->position(4);
-    check(words_in(at, at + body.size()), c.line_of[at], " in a macro");
-  }
-  for (const auto& m : pasting) {
-    const std::regex call("\\b" + m + "\\s*\\(");
-    for (auto it = std::sregex_iterator(code.begin(), code.end(), call); it != std::sregex_iterator(); ++it) {
-      size_t k = it->position(0) + it->length(0);
-      for (int depth = 1; k < code.size() && depth > 0; ++k) depth += code[k] == '(' ? 1 : code[k] == ')' ? -1 : 0;
-      check(words_in(it->position(0) + m.size(), k), c.line_of[it->position(0)], " from the arguments of " + m);
+  for (size_t start = 0; start < code.size();) {
+    size_t end = code.find('\n', start);
+    if (end == std::string::npos) end = code.size();
+    size_t k = code.find_first_not_of(" \t\r\f\v", start);
+    if (k < end && (code[k] == '#' || code.compare(k, 2, "%:") == 0)) {
+      k = code.find_first_not_of(" \t\r\f\v", k + (code[k] == '#' ? 1 : 2));
+      if (k < end && identifier_at(k) == "define") {
+        k = code.find_first_not_of(" \t\r\f\v", k);
+        const std::string name = k < end ? identifier_at(k) : "";
+        const size_t paste = code.find("##", k);
+        if (!name.empty() && paste < end) {
+          pasting.insert(name);
+          check(words_in(k, end), c.line_of[k], " in a macro");
+        }
+      }
     }
+    start = end + 1;
+  }
+  if (pasting.empty()) return;
+  for (size_t i = 0; i < code.size();) {
+    if (!ident_char(code[i]) || (i > 0 && ident_char(code[i - 1]))) {
+      ++i;
+      continue;
+    }
+    const size_t at = i;
+    const std::string id = identifier_at(i);
+    if (!pasting.count(id)) continue;
+    size_t k = skip_space(code, i);
+    if (k >= code.size() || code[k] != '(') continue;
+    // A name is built from a few short pieces: 256 bytes of arguments is plenty,
+    // and nested calls of a megabyte each would cost their square.
+    const size_t limit = std::min(code.size(), k + 256);
+    for (int depth = 1; ++k < limit && depth > 0;) depth += code[k] == '(' ? 1 : code[k] == ')' ? -1 : 0;
+    check(words_in(i, k), c.line_of[at], " from the arguments of " + id);
   }
 }
 

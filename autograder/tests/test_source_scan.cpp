@@ -1,6 +1,8 @@
 // What pt-grade submission rejects and flags in a task file before building it.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "source_scan.h"
 
 namespace pt::grade {
@@ -165,6 +167,7 @@ TEST(SourceScan, FlagsReadsOfTheProgramsOwnMemory) {
       {"auto p = (unsigned char *) 4194304;\n", "integer made a pointer"},
       {"auto p = reinterpret_cast<const uint8_t*>(0x55'0000'0000ull);\n", "integer made a pointer"},
       {"auto p = (char*)(uintptr_t)0x1000;\n", "integer made a pointer"},
+      {"auto p = (const char*)(0x400000);\n", "integer made a pointer"},
       {"const char* f = \"/proc/self/mem\";\n", "/proc"},
       {"const char* f = \"/pr\" \"oc/self/maps\";\n", "/proc"},
       {"std::string f = std::string(\"/\") + \"self/exe\";\n", "self/"},
@@ -246,6 +249,28 @@ TEST(SourceScan, OrdinaryTaskCodeRaisesNoFlag) {
       "}\n";
   SourceScan s = scan_task_source(src, kFramework);
   EXPECT_TRUE(s.flags.empty()) << lines(s.flags);
+}
+
+// A task file may be up to 1 MiB of anything: the scan must neither recurse
+// per character (std::regex's matcher overflowed its stack on a 1 MB
+// #define line) nor cost the square of the size.
+TEST(SourceScan, AMegabyteOfHostileTextIsScannedQuickly) {
+  const std::vector<std::string> texts = {
+      "#define X " + std::string(1000000, 'a') + "\n",
+      "int x = (char*)" + std::string(1000000, ' ') + "1;\n",
+      "#define C(a, b) a##b\n" + [] {
+        std::string calls;
+        for (int i = 0; i < 300000; ++i) calls += "C(";
+        return calls;
+      }() + "\n",
+      std::string(500000, '*') + std::string(500000, ')'),
+  };
+  for (const auto& text : texts) {
+    const auto start = std::chrono::steady_clock::now();
+    scan_task_source(text, kFramework);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
+        << text.substr(0, 40);
+  }
 }
 
 }  // namespace
