@@ -6,16 +6,19 @@
 // in the program replace a shared library's (write(), say, through which the
 // test main reports its verdicts).
 //
-//   pt-link-guard OBJECT... --framework FILE... --libraries SHARED_LIBRARY...
+//   pt-link-guard OBJECT... --tests FILE... --framework FILE... --libraries SHARED_LIBRARY...
 //
-// OBJECT: the task file's objects. FILE: the other objects and static
-// libraries of the link (test main, support, tests, skeleton, GoogleTest).
+// OBJECT: the task file's objects. --tests: the test side of the link (test
+// main, support, the tests, GoogleTest); --framework: the rest (skeleton, the
+// other parts' solution).
 // SHARED_LIBRARY: libc, libm, libstdc++, libgcc_s. Exit status 0 when the
 // objects are clean, 1 when not (each reason on stderr), 2 when it could not
 // tell.
 #include <cxxabi.h>
 
+#include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <memory>
 #include <set>
@@ -34,8 +37,8 @@ struct Symbol {
   char type;
 };
 
-std::vector<Symbol> defined_symbols(const std::string& file, bool dynamic) {
-  std::vector<std::string> argv{"nm", "-P", "--defined-only"};
+std::vector<Symbol> symbols(const std::string& file, bool dynamic, bool defined) {
+  std::vector<std::string> argv{"nm", "-P", defined ? "--defined-only" : "--undefined-only"};
   if (dynamic) argv.push_back("-D");
   argv.push_back(file);
   std::string out;
@@ -53,6 +56,7 @@ std::vector<Symbol> defined_symbols(const std::string& file, bool dynamic) {
   }
   return symbols;
 }
+std::vector<Symbol> defined_symbols(const std::string& file, bool dynamic) { return symbols(file, dynamic, true); }
 
 std::vector<std::string> section_names(const std::string& file) {
   std::string out;
@@ -75,18 +79,87 @@ std::string demangle(const std::string& name) {
   return status == 0 && d ? std::string(d.get()) : name;
 }
 
-bool is_global(char type) { return type >= 'A' && type <= 'Z' && type != 'U'; }
-bool is_weak(char type) { return type == 'W' || type == 'V'; }
+// 'u': a GNU unique symbol (a static member or local of an inline function
+// or template), one copy for the whole process, like a weak one.
+bool is_global(char type) { return (type >= 'A' && type <= 'Z' && type != 'U') || type == 'u'; }
+bool is_weak(char type) { return type == 'W' || type == 'V' || type == 'u'; }
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The namespaces of the test side: the test support's (tests/support/) and
+// GoogleTest's. The framework (skeleton/) uses pt:: alone.
+const char* const kTestNamespaces[] = {"pt::test::", "pt::grading::", "pt::library::", "pt::error_model::",
+                                       "pt::stats::", "testing::"};
+
+// The test-side namespace a demangled name mentions anywhere (its own scope,
+// a template argument, a parameter type), or "".
+std::string test_namespace_in(const std::string& demangled) {
+  for (const char* ns : kTestNamespaces)
+    for (size_t at = demangled.find(ns); at != std::string::npos; at = demangled.find(ns, at + 1))
+      if (at == 0 || !(std::isalnum(static_cast<unsigned char>(demangled[at - 1])) || demangled[at - 1] == '_' ||
+                       demangled[at - 1] == ':'))
+        return std::string(ns, std::strlen(ns) - 2);
+  return "";
+}
+
+// The outermost scope of a mangled name ("std", "glm", "pt", "" for a global
+// or unscoped name) and, under pt, the next one: enough to tell an
+// instantiation of the standard library, GLM or the framework's headers.
+std::pair<std::string, std::string> mangled_scope(const std::string& m) {
+  size_t p = 2;  // after _Z
+  if (m.compare(0, 2, "_Z") != 0) return {"", ""};
+  // Special names of a type or an entity: vtable, VTT, typeinfo and its name,
+  // a thread_local's init and wrapper functions, guard variable, a lifetime-
+  // extended temporary, a local entity's enclosing function.
+  for (const char* special : {"TV", "TT", "TI", "TS", "TH", "TW", "GV", "GR", "Z"})
+    if (m.compare(p, std::strlen(special), special) == 0) {
+      p += std::strlen(special);
+      break;
+    }
+  const bool nested = p < m.size() && m[p] == 'N';
+  if (nested) ++p;
+  while (p < m.size() && (m[p] == 'r' || m[p] == 'V' || m[p] == 'K')) ++p;
+  if (p < m.size() && (m[p] == 'R' || m[p] == 'O')) ++p;
+  if (m.compare(p, 2, "St") == 0) return {"std", ""};
+  if (p + 1 < m.size() && m[p] == 'S' && std::strchr("absiod", m[p + 1])) return {"std", ""};  // Sa: std::allocator, ...
+  auto component = [&](size_t& at) {
+    size_t len = 0;
+    while (at < m.size() && std::isdigit(static_cast<unsigned char>(m[at]))) len = len * 10 + (m[at++] - '0');
+    std::string name = m.substr(at, len);
+    at += len;
+    return name;
+  };
+  if (p >= m.size() || !std::isdigit(static_cast<unsigned char>(m[p]))) return {"", ""};
+  std::string first = component(p);
+  if (!nested) return {"", ""};  // a global function or variable: no scope
+  std::string second = p < m.size() && std::isdigit(static_cast<unsigned char>(m[p])) ? component(p) : "";
+  return {first, second};
+}
+
+// An inline or template definition that any file including the standard
+// library, GLM or the framework's headers makes: the task's copy and the
+// tests' copy are the same code, and the task's, linked last, is discarded.
+bool header_instantiation(const std::string& mangled) {
+  // The compiler's own: the reference to the C++ personality routine that
+  // every object with exception handling holds.
+  if (starts_with(mangled, "DW.ref.")) return true;
+  const auto [first, second] = mangled_scope(mangled);
+  if (first == "std" || first == "__gnu_cxx" || first == "__cxxabiv1" || first == "glm") return true;
+  if (first != "pt") return false;
+  for (const char* ns : kTestNamespaces)
+    if (starts_with(ns, "pt::") && second + "::" == std::string(ns + 4)) return false;
+  return true;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> objects, framework, libraries;
+  std::vector<std::string> objects, tests, framework, libraries;
   std::vector<std::string>* list = &objects;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--framework")
+    if (a == "--tests")
+      list = &tests;
+    else if (a == "--framework")
       list = &framework;
     else if (a == "--libraries")
       list = &libraries;
@@ -94,11 +167,15 @@ int main(int argc, char** argv) {
       list->push_back(a);
   }
   if (objects.empty()) {
-    std::fprintf(stderr, "usage: pt-link-guard OBJECT... --framework FILE... --libraries SHARED_LIBRARY...\n");
+    std::fprintf(stderr,
+                 "usage: pt-link-guard OBJECT... --tests FILE... --framework FILE... --libraries SHARED_LIBRARY...\n");
     return 2;
   }
   try {
-    std::set<std::string> framework_symbols, library_symbols;
+    std::set<std::string> test_symbols, framework_symbols, library_symbols;
+    for (const auto& f : tests)
+      for (const auto& s : defined_symbols(f, false))
+        if (is_global(s.type)) test_symbols.insert(s.name);
     for (const auto& f : framework)
       for (const auto& s : defined_symbols(f, false))
         if (is_global(s.type)) framework_symbols.insert(s.name);
@@ -117,24 +194,33 @@ int main(int argc, char** argv) {
           refuse("defines " + name + " as an indirect function (ifunc): code that runs before the test main");
           continue;
         }
-        if (!is_global(s.type)) continue;
+        if (!is_global(s.type)) continue;  // internal linkage: the task file's own
         const bool strong = !is_weak(s.type);
+        const std::string kind = strong ? "defines " : "defines an inline or weak copy of ";
+        const std::string test_ns = test_namespace_in(name);
         if (s.name == "main")
           refuse("defines main()");
-        else if (strong && (starts_with(name, "pt::grading::") || starts_with(name, "pt::test::") ||
-                            starts_with(name, "testing::")))
-          refuse("defines " + name + ", which belongs to the test framework");
+        else if (!test_ns.empty())
+          refuse(kind + name + ", in " + test_ns + ", which belongs to the tests, their support or GoogleTest");
+        else if (test_symbols.count(s.name) && (strong || !header_instantiation(s.name)))
+          refuse(kind + name + ", which the tests or their support define: it could replace theirs");
         else if (strong && framework_symbols.count(s.name))
           refuse("defines " + name + ", which the test framework or the skeleton defines: it would replace theirs");
         else if ((strong || !starts_with(s.name, "_Z")) && library_symbols.count(s.name))
           refuse("defines " + name + ", which the C or C++ library defines: it would replace the library's everywhere");
       }
+      // What the task file uses must come from the framework or the
+      // libraries: the tests' own code (the support's BVH builder, its
+      // expected values, GoogleTest's registry) is not the task's to call.
+      for (const auto& s : symbols(object, false, false))
+        if (test_symbols.count(s.name) && !framework_symbols.count(s.name) && !library_symbols.count(s.name))
+          refuse("uses " + demangle(s.name) + ", which only the tests, their support or GoogleTest define");
     }
     if (problems.empty()) return 0;
     for (const auto& p : problems) std::fprintf(stderr, "pt-link-guard: %s\n", p.c_str());
     std::fprintf(stderr,
-                 "pt-link-guard: a task file defines the task functions and its own helpers, nothing else "
-                 "(autograder/README.md)\n");
+                 "pt-link-guard: a task file defines the task functions and its own helpers, nothing else, and "
+                 "calls the framework and the C++ library, not the tests (autograder/README.md, \"Linking\")\n");
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pt-link-guard: %s\n", e.what());

@@ -2,7 +2,10 @@
 // What `pt-grade submission` reads in a task file before it builds anything
 // (issue 8 section 2; autograder/README.md has the threat model):
 //
-//  * Rejections: an #include of anything but the C++ standard library, GLM
+//  * Rejections: a file that is not UTF-8, starts with a byte-order mark,
+//    holds a NUL or a CR not followed by LF (the compiler would read its
+//    lines differently: each named with its line, nothing else is read);
+//    an #include of anything but the C++ standard library, GLM
 //    and the framework's headers; #include_next, #import and #embed; an
 //    #include whose header name is computed by a macro or cannot be read
 //    plainly; the assembler's .incbin or .include in a string (asm
@@ -12,10 +15,14 @@
 //    control (fork, exec*, kill, ptrace, syscall, exit), asm, dlsym, "/proc",
 //    the environment, file output, signal handlers, constructor, section and
 //    ifunc attributes, names of the test support (pt::grading, pt::test,
-//    ::testing), a definition of main.
+//    ::testing), a definition of main; reads of the program's own memory by
+//    address (the linker's boundary symbols, dl_iterate_phdr, memmem, an
+//    integer made a pointer, /proc/self); names built with ##.
 //
-// The scanner follows the preprocessor's first phases (line splices,
-// comments, string and raw string literals, the %: digraph), so that a
+// The scanner follows the preprocessor's first phases (line splices, with
+// spaces before the line end as GCC takes them; comments; string literals;
+// raw string literals where the tokenizer sees one, ended as the compiler
+// ends them, splices undone; digit separators; the %: digraph), so that a
 // directive cannot hide from it in a way the compiler would still honour; what
 // it cannot read plainly it rejects. The build then checks what the compiler
 // actually opened (its dependency list), which catches anything this misses.
@@ -41,5 +48,8 @@ SourceScan scan_task_source(const std::string& text, const std::set<std::string>
 
 // A header of the C++17 standard library (<vector>, <cmath>, <math.h>, ...).
 bool is_standard_header(const std::string& name);
+// All of them (the kit's header probe, autograder/header_probe.cpp,
+// includes each).
+const std::set<std::string>& standard_headers();
 
 }  // namespace pt::grade

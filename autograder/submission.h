@@ -13,7 +13,9 @@
 //     folder, put the task files in it, and build each part's test binary on
 //     its own: a compile error costs only that part, and its first errors go
 //     to the report; pt-link-guard checks each link, and the compiler's own
-//     list of the files it read is checked against the allowed folders;
+//     list of the files it read is checked against the task file, the
+//     framework's headers and what the kit's header probe read (the
+//     standard library and GLM: dependency_check.h);
 //  5. grade each part's binary, hidden tests included, in the sandbox
 //     (grade_part.h), rewriting results.json as each part finishes;
 //  6. render the scene library with the student's working parts (report.html).
@@ -24,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "dependency_check.h"
 #include "grade_part.h"
 #include "sandbox.h"
 #include "submission_files.h"
@@ -59,9 +62,5 @@ std::string intake_rejection(const TaskFile& file, const std::set<std::string>& 
 // What a failed build printed that a student needs: the compiler's errors
 // first, paths relative to tree_dir, ninja's progress left out.
 std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines = 40);
-// The files the compiler opened for objects whose path holds object_marker
-// (ninja's dependency record in build_dir) that lie in none of `allowed`.
-std::vector<std::string> unexpected_dependencies(const std::string& build_dir, const std::string& object_marker,
-                                                 const std::vector<std::string>& allowed);
 
 }  // namespace pt::grade

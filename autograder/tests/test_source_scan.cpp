@@ -1,6 +1,8 @@
 // What pt-grade submission rejects and flags in a task file before building it.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "source_scan.h"
 
 namespace pt::grade {
@@ -85,6 +87,126 @@ TEST(SourceScan, NulBytesAreRejected) {
   EXPECT_TRUE(mentions(s.rejections, "NUL"));
 }
 
+// GCC skips a byte-order mark and ends a line at a lone CR: either would make
+// a directive of text the scanner reads as something else.
+TEST(SourceScan, EncodingTheCompilerReadsDifferentlyIsRejectedWithTheLine) {
+  SourceScan bom = scan_task_source("\xEF\xBB\xBF#include <gtest/gtest.h>\nint x;\n", kFramework);
+  EXPECT_TRUE(mentions(bom.rejections, "byte-order mark", 1)) << lines(bom.rejections);
+  SourceScan cr = scan_task_source("int x;\nint y;\r#include <gtest/gtest.h>\n", kFramework);
+  EXPECT_TRUE(mentions(cr.rejections, "carriage return not followed by a line feed", 2)) << lines(cr.rejections);
+  SourceScan latin1 = scan_task_source("int x;\n// caf\xE9\n", kFramework);
+  EXPECT_TRUE(mentions(latin1.rejections, "not UTF-8", 2)) << lines(latin1.rejections);
+  SourceScan overlong = scan_task_source("// \xC0\xAF\n", kFramework);  // '/' spelled in two bytes
+  EXPECT_TRUE(mentions(overlong.rejections, "not UTF-8", 1)) << lines(overlong.rejections);
+  SourceScan surrogate = scan_task_source("// \xED\xA0\x80\n", kFramework);
+  EXPECT_TRUE(mentions(surrogate.rejections, "not UTF-8", 1)) << lines(surrogate.rejections);
+  SourceScan truncated = scan_task_source("int x; // \xE2\x82", kFramework);
+  EXPECT_TRUE(mentions(truncated.rejections, "not UTF-8", 1)) << lines(truncated.rejections);
+}
+
+TEST(SourceScan, CrlfAndUtf8TextAreAccepted) {
+  const std::string src = "#include <cmath>\r\n// \xC2\xB5m, \xE2\x82\xAC, \xF0\x9F\x99\x82\r\nint x;\r\n";
+  SourceScan s = scan_task_source(src, kFramework);
+  EXPECT_TRUE(s.rejections.empty()) << lines(s.rejections);
+}
+
+// R"( starts a raw string only as a token of its own (R, u8R, uR, UR, LR):
+// `fuR"(` is the identifier fuR and an ordinary string, so the line after it
+// is a directive for the compiler, and must be for the scanner.
+TEST(SourceScan, RawStringPrefixesAreWholeTokens) {
+  const std::string hidden = "#define X(a) 0\nint z = X(fuR\"(\");\n#include <gtest/gtest.h>\n// )\"\n";
+  SourceScan s = scan_task_source(hidden, kFramework);
+  EXPECT_TRUE(mentions(s.rejections, "gtest", 3)) << lines(s.rejections);
+  SourceScan x = scan_task_source("int z = X(xR\"(\");\n#include <unistd.h>\n// )\"\n", kFramework);
+  EXPECT_TRUE(mentions(x.rejections, "unistd", 2)) << lines(x.rejections);
+  for (const char* prefix : {"R", "u8R", "uR", "UR", "LR"}) {
+    const std::string raw = std::string("auto s = ") + prefix + "\"(\n#include <unistd.h>\n)\";\n";
+    SourceScan r = scan_task_source(raw, kFramework);
+    EXPECT_TRUE(r.rejections.empty()) << prefix << "\n" << lines(r.rejections);
+  }
+}
+
+// The compiler undoes line splices inside a raw string: `)x\` + newline +
+// `"` does not end R"x(. The scanner must not end it there either.
+TEST(SourceScan, RawStringsEndWhereTheCompilerEndsThem) {
+  const std::string src = "auto a = R\"x( )x\\\n\" R\"y( )x\";\n#include <unistd.h>\n// )y\"\n";
+  SourceScan s = scan_task_source(src, kFramework);
+  EXPECT_TRUE(mentions(s.rejections, "unistd", 3)) << lines(s.rejections);
+}
+
+// A backslash, spaces, then the line end is a splice for GCC: `*\ ` and `/`
+// on the next line close a comment.
+TEST(SourceScan, SplicesWithTrailingSpacesAreSplices) {
+  const std::string src = "/* a comment *\\  \n/\n#include <unistd.h>\n";
+  SourceScan s = scan_task_source(src, kFramework);
+  EXPECT_TRUE(mentions(s.rejections, "unistd", 3)) << lines(s.rejections);
+}
+
+// 1'000 is a number; a quote there opens no character literal that would hide
+// the rest of the line from the flags.
+TEST(SourceScan, DigitSeparatorsOpenNoLiteral) {
+  SourceScan s = scan_task_source("long n = 1'000; long p = fork(); char c = 'x';\n", kFramework);
+  EXPECT_TRUE(mentions(s.flags, "fork", 1)) << lines(s.flags);
+  SourceScan u8 = scan_task_source("auto c = u8'a'; // fork\n", kFramework);
+  EXPECT_TRUE(u8.flags.empty()) << lines(u8.flags);
+}
+
+// Reading the program's own memory by address: the linker's boundary symbols,
+// the loader's walk of the image, an integer made a pointer, /proc/self.
+TEST(SourceScan, FlagsReadsOfTheProgramsOwnMemory) {
+  const std::vector<std::pair<std::string, std::string>> hits = {
+      {"extern char __bss_start[];\n", "__bss_start"},
+      {"extern \"C\" char etext, edata;\n", "etext"},
+      {"extern char end;\n", "end"},
+      {"extern \"C\" char end[];\n", "end"},
+      {"auto p = &__executable_start;\n", "__executable_start"},
+      {"int n = dl_iterate_phdr(cb, nullptr);\n", "dl_iterate_phdr"},
+      {"long r = process_vm_readv(0, 0, 0, 0, 0, 0);\n", "process_vm_readv"},
+      {"auto h = memmem(a, n, key, 8);\n", "memmem"},
+      {"auto p = (const char*)0x400000;\n", "integer made a pointer"},
+      {"auto p = (unsigned char *) 4194304;\n", "integer made a pointer"},
+      {"auto p = reinterpret_cast<const uint8_t*>(0x55'0000'0000ull);\n", "integer made a pointer"},
+      {"auto p = (char*)(uintptr_t)0x1000;\n", "integer made a pointer"},
+      {"auto p = (const char*)(0x400000);\n", "integer made a pointer"},
+      {"const char* f = \"/proc/self/mem\";\n", "/proc"},
+      {"const char* f = \"/pr\" \"oc/self/maps\";\n", "/proc"},
+      {"std::string f = std::string(\"/\") + \"self/exe\";\n", "self/"},
+  };
+  for (const auto& [src, word] : hits) {
+    SourceScan s = scan_task_source(src, kFramework);
+    EXPECT_TRUE(mentions(s.flags, word, 1)) << src << lines(s.flags);
+    EXPECT_TRUE(s.rejections.empty()) << src << lines(s.rejections);
+  }
+  // Near misses: the same words where they mean nothing of the kind.
+  const std::vector<std::string> misses = {
+      "auto end = v.end(); for (auto it = v.begin(); it != end; ++it) {}\n",
+      "int end = 3;\n",
+      "double etext_width = 2;\n",
+      "auto p = (const char*)0;\n",
+      "double x = (a * b) * 4096;\n",
+      "auto p = static_cast<float*>(nullptr);\n",
+      "const char* s = \"processed 10 rays, /tmp\";\n",
+      "auto q = memcpy(a, b, 8);\n",
+  };
+  for (const auto& src : misses) {
+    SourceScan s = scan_task_source(src, kFramework);
+    EXPECT_TRUE(s.flags.empty()) << src << lines(s.flags);
+  }
+}
+
+// Token pasting that builds the framework's or the grader's names.
+TEST(SourceScan, FlagsNamesBuiltByTokenPasting) {
+  SourceScan body = scan_task_source("#define G pt::gra ## ding::register_test\n", kFramework);
+  EXPECT_TRUE(mentions(body.flags, "## pastes together \"grading\"", 1)) << lines(body.flags);
+  SourceScan call = scan_task_source("#define CAT(a, b) a##b\nnamespace pt { namespace CAT(gra, ding) {} }\n"
+                                     "void f() { CAT(test, ing)::x(); }\n",
+                                     kFramework);
+  EXPECT_TRUE(mentions(call.flags, "\"grading\" from the arguments of CAT", 2)) << lines(call.flags);
+  EXPECT_TRUE(mentions(call.flags, "\"testing\" from the arguments of CAT", 3)) << lines(call.flags);
+  SourceScan miss = scan_task_source("#define CAT(a, b) a##b\nauto CAT(v, 3) = CAT(hit_, count);\n", kFramework);
+  EXPECT_TRUE(miss.flags.empty()) << lines(miss.flags);
+}
+
 TEST(SourceScan, FlagsWhatAnInstructorShouldRead) {
   const std::string src =
       "#include <cstdlib>\n"                                         // 1
@@ -127,6 +249,28 @@ TEST(SourceScan, OrdinaryTaskCodeRaisesNoFlag) {
       "}\n";
   SourceScan s = scan_task_source(src, kFramework);
   EXPECT_TRUE(s.flags.empty()) << lines(s.flags);
+}
+
+// A task file may be up to 1 MiB of anything: the scan must neither recurse
+// per character (std::regex's matcher overflowed its stack on a 1 MB
+// #define line) nor cost the square of the size.
+TEST(SourceScan, AMegabyteOfHostileTextIsScannedQuickly) {
+  const std::vector<std::string> texts = {
+      "#define X " + std::string(1000000, 'a') + "\n",
+      "int x = (char*)" + std::string(1000000, ' ') + "1;\n",
+      "#define C(a, b) a##b\n" + [] {
+        std::string calls;
+        for (int i = 0; i < 300000; ++i) calls += "C(";
+        return calls;
+      }() + "\n",
+      std::string(500000, '*') + std::string(500000, ')'),
+  };
+  for (const auto& text : texts) {
+    const auto start = std::chrono::steady_clock::now();
+    scan_task_source(text, kFramework);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
+        << text.substr(0, 40);
+  }
 }
 
 }  // namespace

@@ -218,7 +218,12 @@ int main(int argc, char** argv) {
   }
   // Under `pt-grade submission` the case's "submission" keys replace the others.
   if (submission && expect.contains("submission"))
-    for (const auto& [key, value] : expect["submission"].items()) expect[key] = value;
+    for (const auto& [key, value] : expect["submission"].items()) {
+      if (value.is_null())
+        expect.erase(key);  // what the run would show, where the submission never runs
+      else
+        expect[key] = value;
+    }
   const int part = expect.at("part").get<int>();
   std::printf("case %s%s: %s\n", case_dir.c_str(), submission ? " (pt-grade submission)" : "",
               expect.value("attack", "").c_str());

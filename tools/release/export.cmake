@@ -194,6 +194,7 @@ elseif(MODE STREQUAL "kit")
     copy_file(${S}/skeleton/${h} include/${h})
   endforeach()
   copy_file(${S}/skeleton/app/main.cpp src/main.cpp)
+  copy_file(${S}/autograder/header_probe.cpp src/header_probe.cpp)
   copy_tree(tasks)
   copy_tree(scenes EXCLUDE ${scene_excludes})
   copy_tree(handouts)  # the report sends each failure to its section

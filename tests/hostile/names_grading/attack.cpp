@@ -1,11 +1,15 @@
 // Not an attack: names that only look like one. The task file is the
 // solution, with a helper in namespace pt::grading and another in pt::test
-// that collide with nothing the grader links. The source flags must show
-// them to the instructor, and the score must not change: a flag is for a
-// person to read, never a penalty.
+// that collide with nothing the grader links and are the file's own
+// (internal linkage: pt-link-guard refuses any external definition in the
+// test side's namespaces). The source flags must show them to the
+// instructor, and the score must not change: a flag is for a person to
+// read, never a penalty.
 namespace pt::grading {
-inline int task_file_helper_calls = 0;
+static int task_file_helper_calls = 0;
 }
 namespace pt::test {
-inline int task_file_seed_note = 0;
+namespace {
+int task_file_seed_note = 0;
 }
+}  // namespace pt::test
