@@ -1,5 +1,6 @@
 #include "command.h"
 
+#include <poll.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -59,7 +60,18 @@ int run(const std::vector<std::string>& argv, std::string* output, double kill_a
     return exit_code(status);
   }
   char buf[65536];
-  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) != 0;) {
+  for (ssize_t n;;) {
+    if (options.stop_when) {
+      pollfd p{fds[0], POLLIN, 0};
+      if (::poll(&p, 1, 250) == 0) {
+        if (options.stop_when()) {
+          ::kill(-pid, SIGKILL);  // `timeout` leads a process group of its own
+          ::kill(pid, SIGKILL);
+        }
+        continue;
+      }
+    }
+    if ((n = ::read(fds[0], buf, sizeof buf)) == 0) break;
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) break;
     if (output && output->size() < options.max_output)

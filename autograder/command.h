@@ -26,6 +26,9 @@ struct CommandOptions {
   // Runs in the child between fork and exec (confinement); a non-empty
   // return is what failed, and the child exits with status 126.
   std::function<std::string()> in_child;
+  // Asked about every quarter second while the program runs; true kills its
+  // process group (and it): how a bound that no limit enforces is kept.
+  std::function<bool()> stop_when;
 };
 
 // The same with a bound on the output kept, a parent-death signal and a step
