@@ -5,7 +5,8 @@
 //     Gradescope a fixed, public path), where the grader would make the folder
 //     of part 1's own render: the grader followed it, handed that folder to
 //     the sandbox's user, and the next render wrote a results.json of its own
-//     there (with or without Landlock: its write rule follows the link too);
+//     there (where Landlock is missing: it refuses to make a link, and the
+//     case is graded without it);
 //   - a file `part5` where the grader would make part 5's folder: the
 //     grader stopped (exit 2), its report incomplete, its tree left behind.
 // Every render then fails, so that the grader renders each part alone.
