@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <thread>
 
 namespace pt::grade {
@@ -91,6 +92,14 @@ int run_command(const std::vector<std::string>& argv, std::string* output, doubl
 
 int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options) {
   return run(argv, output, 0, options);
+}
+
+void hide_command_line(int argc, char** argv, const char* name) {
+  if (argc < 1) return;
+  char* begin = argv[0];
+  char* end = argv[argc - 1] + std::strlen(argv[argc - 1]);
+  std::memset(begin, 0, static_cast<size_t>(end - begin));
+  std::strncpy(begin, name, static_cast<size_t>(end - begin));
 }
 
 }  // namespace pt::grade

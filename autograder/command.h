@@ -35,4 +35,11 @@ struct CommandOptions {
 // before exec.
 int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options);
 
+// Blanks this process's command line where the kernel reads it for
+// /proc/PID/cmdline, leaving `name`: the grader's names the results, the
+// report and the kit, and code under test can read /proc (the grader's own
+// entry without a PID namespace; the sandbox's first process, a copy of the
+// grader, with one). Call it once the arguments are parsed into copies.
+void hide_command_line(int argc, char** argv, const char* name);
+
 }  // namespace pt::grade

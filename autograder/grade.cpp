@@ -17,6 +17,7 @@
 
 #include "check_submission.h"
 #include "checks.h"
+#include "command.h"
 #include "grade_part.h"
 #include "manifest.h"
 #include "redact.h"
@@ -196,19 +197,6 @@ void scrub_gtest_environment() {
   for (const auto& n : names) ::unsetenv(n.c_str());
 }
 
-// The command line names the results, the report and the kit: code under
-// test could read it in /proc (the grader's own entry without a PID
-// namespace, the sandbox's first process with one, a copy of the grader).
-// Once parsed it is blanked where the kernel reads it, so that every later
-// process of the grader shows only "pt-grade".
-void hide_command_line(int argc, char** argv) {
-  if (argc < 1) return;
-  char* begin = argv[0];
-  char* end = argv[argc - 1] + std::strlen(argv[argc - 1]);
-  std::memset(begin, 0, static_cast<size_t>(end - begin));
-  std::strncpy(begin, "pt-grade", static_cast<size_t>(end - begin));
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -367,7 +355,7 @@ int main(int argc, char** argv) {
   }
 
   scrub_gtest_environment();
-  hide_command_line(argc, argv);
+  hide_command_line(argc, argv, "pt-grade");
   try {
     if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
     if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
