@@ -218,7 +218,10 @@ int grade_submission(const SubmissionOptions& opt) {
     // 4. A fresh tree: the kit (no solution source) and the task files.
     const bool namespaces = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
                                                              "namespaces") == opt.sandbox.without.end();
-    WorkArea area(opt.work.empty() ? fs::temp_directory_path().string() : opt.work, namespaces);
+    WorkArea area(opt.work.empty() ? fs::temp_directory_path().string() : opt.work,
+                  opt.keep_work ? "--keep-work: a tmpfs would end with the grader"
+                  : namespaces  ? ""
+                                : "left out (--no-sandbox or --sandbox-without namespaces)");
     if (opt.keep_work) area.keep();
     if (!area.unbounded_reason().empty())
       report.notes.push_back("no tmpfs bounds the submission's files (" + area.unbounded_reason() + "): the builds and " +

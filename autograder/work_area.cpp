@@ -32,7 +32,7 @@ std::string mount_bounded(const std::string& dir) {
 
 }  // namespace
 
-WorkArea::WorkArea(const std::string& parent, bool tmpfs) {
+WorkArea::WorkArea(const std::string& parent, const std::string& no_tmpfs) {
   std::error_code ec;
   fs::create_directories(parent, ec);
   // No link anywhere in the paths below: each is then opened without
@@ -42,7 +42,7 @@ WorkArea::WorkArea(const std::string& parent, bool tmpfs) {
   std::string pattern = (real / "pt-submission-XXXXXX").string();
   if (!::mkdtemp(pattern.data())) throw std::runtime_error(errno_text("cannot create a folder in " + real.string()));
   root_ = pattern;
-  unbounded_ = tmpfs ? mount_bounded(root_) : "left out (--sandbox-without namespaces)";
+  unbounded_ = no_tmpfs.empty() ? mount_bounded(root_) : no_tmpfs;
   mounted_ = unbounded_.empty();
   // The sandbox's user passes through to its own render folder, and sees nothing else.
   if (::chmod(root_.c_str(), 0711) != 0 || ::mkdir(tree().c_str(), 0700) != 0 ||

@@ -24,10 +24,11 @@ inline constexpr uint64_t kDiskBytes = 512ull << 20;
 
 class WorkArea {
  public:
-  // A fresh folder in `parent` (created if missing); `tmpfs`: try the bounded
-  // tmpfs (false: --sandbox-without namespaces, to test the fallback). Throws
+  // A fresh folder in `parent` (created if missing), on the bounded tmpfs
+  // unless `no_tmpfs` says why not (--sandbox-without namespaces, to test the
+  // fallback; --keep-work, since the tmpfs ends with the grader). Throws
   // std::runtime_error when no folder can be made.
-  WorkArea(const std::string& parent, bool tmpfs);
+  WorkArea(const std::string& parent, const std::string& no_tmpfs);
   ~WorkArea();  // removes it all, unless kept
   WorkArea(const WorkArea&) = delete;
   WorkArea& operator=(const WorkArea&) = delete;
