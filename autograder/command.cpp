@@ -61,16 +61,19 @@ int run(const std::vector<std::string>& argv, std::string* output, double kill_a
     return exit_code(status);
   }
   char buf[65536];
+  auto next_check = std::chrono::steady_clock::now();
   for (ssize_t n;;) {
-    if (options.stop_when) {
+    if (options.stop_when) {  // asked on its own clock, so a program that prints without end is asked too
       pollfd p{fds[0], POLLIN, 0};
-      if (::poll(&p, 1, 250) == 0) {
-        if (options.stop_when()) {
-          ::kill(-pid, SIGKILL);  // `timeout` leads a process group of its own
-          ::kill(pid, SIGKILL);
-        }
-        continue;
+      const bool idle = ::poll(&p, 1, 250) == 0;
+      if (std::chrono::steady_clock::now() >= next_check) {
+        next_check = std::chrono::steady_clock::now() + std::chrono::milliseconds(250);
+        // SIGTERM, as when the grader dies: `timeout` (the leader of this
+        // group) passes it on, and ninja ends the commands it started in
+        // process groups of their own, which a SIGKILL here would miss.
+        if (options.stop_when()) ::kill(-pid, SIGTERM);
       }
+      if (idle) continue;
     }
     if ((n = ::read(fds[0], buf, sizeof buf)) == 0) break;
     if (n < 0 && errno == EINTR) continue;

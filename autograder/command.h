@@ -26,8 +26,8 @@ struct CommandOptions {
   // Runs in the child between fork and exec (confinement); a non-empty
   // return is what failed, and the child exits with status 126.
   std::function<std::string()> in_child;
-  // Asked about every quarter second while the program runs; true kills its
-  // process group (and it): how a bound that no limit enforces is kept.
+  // Asked about every quarter second while the program runs; true sends its
+  // process group SIGTERM: how a bound that no limit enforces is kept.
   std::function<bool()> stop_when;
 };
 

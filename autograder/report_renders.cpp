@@ -90,8 +90,7 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
   RenderWatch watch(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)),
                     limit, job.over_bound);
   const RunOutcome run = sandbox.run(req, watch);
-  const std::string bound = watch.stopped_by_bound() ? job.bound_note("File size limit exceeded")
-                                                     : job.bound_note(run.output);
+  const std::string bound = job.bound_note(run.output, watch.stopped_by_bound());
   if (!run.exit.exited_ok()) {
     std::string tail = run.output.size() > 400 ? "..." + run.output.substr(run.output.size() - 400) : run.output;
     c.error = (bound.empty() ? "" : bound + ": ") + "the renderer " +

@@ -45,7 +45,8 @@ struct RenderJob {
   // True when the submission's files are over the grader's disk bound: a
   // render is then stopped, and its image judged missing.
   std::function<bool()> over_bound;
-  std::function<std::string(const std::string& output)> bound_note;  // "" or what the bound did
+  // "" or what the bound did to a render (its output; stopped by over_bound).
+  std::function<std::string(const std::string& output, bool stopped)> bound_note;
   std::string configure_parts;     // PT_PARTS_SUBMITTED as configured ("1;3")
   std::set<int> student_parts;     // the parts the renders take from the student
   std::map<int, std::string> part_names;  // n -> "part n (tasks/partn_....cpp)"

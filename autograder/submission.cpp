@@ -241,7 +241,9 @@ int grade_submission(const SubmissionOptions& opt) {
     const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
                                                            "landlock") == opt.sandbox.without.end();
     KitBuild kit_build(tree.string(), landlock);
-    if (!area.unbounded_reason().empty()) kit_build.stop_when([&area] { return area.exceeded(); });
+    bool build_stopped = false;  // by the bound, where no tmpfs enforces it
+    if (!area.unbounded_reason().empty())
+      kit_build.stop_when([&area, &build_stopped] { return build_stopped = build_stopped || area.exceeded(); });
     if (!buildable.empty() && !kit_build.unconfined_reason().empty())
       report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
                              "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
@@ -266,6 +268,7 @@ int grade_submission(const SubmissionOptions& opt) {
       const std::string target = "part" + std::to_string(f->part) + "_tests";
       std::string out;
       const auto build_start = Clock::now();
+      build_stopped = false;
       const int rc = kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", target},
                                    std::min(opt.build_seconds, left), &out);
       const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
@@ -273,7 +276,7 @@ int grade_submission(const SubmissionOptions& opt) {
         const bool timed_out = rc == 124 || rc == 137;
         std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
                                     : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
-        if (const std::string bound = disk_bound_note(out, area); !bound.empty()) why += bound + ".\n";
+        if (const std::string bound = disk_bound_note(out, area, build_stopped); !bound.empty()) why += bound + ".\n";
         why += compiler_errors(out, tree.string());
         set_part(f->part, why);
         continue;
@@ -329,7 +332,9 @@ int grade_submission(const SubmissionOptions& opt) {
           if (!opt.keep_work) fs::remove_all(dir, ec);
         };
         if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
-        job.bound_note = [&area](const std::string& output) { return disk_bound_note(output, area); };
+        job.bound_note = [&area](const std::string& output, bool stopped) {
+          return disk_bound_note(output, area, stopped);
+        };
         if (job.seconds < 5) {
           page.renders_note = "No renders: the submission's time budget ran out.";
         } else {

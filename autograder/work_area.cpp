@@ -94,8 +94,8 @@ std::string WorkArea::fresh_render_folder(std::string* error) {
   return dir;
 }
 
-std::string disk_bound_note(const std::string& text, const WorkArea& area) {
-  const bool refused = text.find("No space left on device") != std::string::npos ||
+std::string disk_bound_note(const std::string& text, const WorkArea& area, bool stopped) {
+  const bool refused = stopped || text.find("No space left on device") != std::string::npos ||
                        text.find("File size limit exceeded") != std::string::npos ||
                        text.find("File too large") != std::string::npos;
   if (!refused && !area.exceeded()) return "";

@@ -57,8 +57,9 @@ class WorkArea {
   int renders_ = 0;
 };
 
-// A sentence for the report when `text` (a build's or a render's output)
-// shows a write refused by the bound, "" otherwise.
-std::string disk_bound_note(const std::string& text, const WorkArea& area);
+// A sentence for the report when the bound stopped a build or a render
+// (`stopped`, where exceeded() is what enforces it) or `text` (its output)
+// shows a write refused by it; "" otherwise.
+std::string disk_bound_note(const std::string& text, const WorkArea& area, bool stopped = false);
 
 }  // namespace pt::grade
