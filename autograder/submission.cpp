@@ -132,6 +132,28 @@ std::string intake_rejection(const TaskFile& f, const std::set<std::string>& hea
   return "";
 }
 
+namespace {
+
+// What steps 1 to 3 leave for steps 4 to 6 (build_and_grade).
+struct Graded {
+  const SubmissionOptions& opt;
+  const fs::path& kit;
+  const Clock::time_point& deadline;
+  const Manifest& manifest;
+  const Redactor& redactor;
+  const std::map<int, std::string>& expected;
+  std::vector<const TaskFile*>& buildable;
+  Report& report;
+  HtmlReport& page;
+  std::function<void()> save;
+  std::function<void(int, const std::string&)> set_part;
+  std::function<size_t(int)> part_index;
+};
+
+int build_and_grade(Graded& graded);
+
+}  // namespace
+
 int grade_submission(const SubmissionOptions& opt) {
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt.budget_seconds));
@@ -213,153 +235,10 @@ int grade_submission(const SubmissionOptions& opt) {
 
   // Steps 4 to 6 work in a folder of the grader's own (work_area.h). An error
   // not foreseen still ends in a complete report saying what failed, and the
-  // folder goes with the WorkArea on every path out.
-  auto build_and_grade = [&]() -> int {
-    // 4. A fresh tree: the kit (no solution source) and the task files.
-    const bool namespaces = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
-                                                             "namespaces") == opt.sandbox.without.end();
-    WorkArea area(opt.work.empty() ? fs::temp_directory_path().string() : opt.work,
-                  opt.keep_work ? "--keep-work: a tmpfs would end with the grader"
-                  : namespaces  ? ""
-                                : "left out (--no-sandbox or --sandbox-without namespaces)");
-    if (opt.keep_work) area.keep();
-    if (!area.unbounded_reason().empty())
-      report.notes.push_back("no tmpfs bounds the submission's files (" + area.unbounded_reason() + "): the builds and " +
-                             "renders are stopped when they pass " + std::to_string(kDiskBytes >> 20) +
-                             " MiB, checked four times a second");
-    const fs::path tree = area.tree();
-    for (const char* item : {"CMakeLists.txt", "include", "lib", "src", "bin"})
-      fs::copy(kit / item, tree / item, fs::copy_options::recursive);
-    fs::create_directories(tree / "tasks");
-    std::string parts_list;
-    for (const TaskFile* f : buildable) {
-      std::ofstream(tree / "tasks" / f->name, std::ios::binary) << f->text;
-      parts_list += (parts_list.empty() ? "" : ";") + std::to_string(f->part);
-    }
-
-    std::map<int, std::string> binaries;
-    const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
-                                                           "landlock") == opt.sandbox.without.end();
-    KitBuild kit_build(tree.string(), landlock);
-    bool build_stopped = false;  // by the bound, where no tmpfs enforces it
-    if (!area.unbounded_reason().empty())
-      kit_build.stop_when([&area, &build_stopped] { return build_stopped = build_stopped || area.exceeded(); });
-    if (!buildable.empty() && !kit_build.unconfined_reason().empty())
-      report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
-                             "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
-    if (!buildable.empty()) {
-      std::string out;
-      const int rc = kit_build.run({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
-                                    "-DPT_PARTS_SUBMITTED=" + parts_list},
-                                   120, &out);
-      if (rc != 0) {
-        std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", out.c_str());
-        for (const TaskFile* f : buildable) set_part(f->part, "not built: the grading kit could not be configured (an instructor must look)");
-        report.notes.push_back("cmake configure failed:\n" + out.substr(0, 4000));
-        buildable.clear();
-      }
-    }
-    for (const TaskFile* f : buildable) {
-      const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-      if (left <= 1) {
-        set_part(f->part, "not built: the submission's time budget ran out");
-        continue;
-      }
-      const std::string target = "part" + std::to_string(f->part) + "_tests";
-      std::string out;
-      const auto build_start = Clock::now();
-      build_stopped = false;
-      const int rc = kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", target},
-                                   std::min(opt.build_seconds, left), &out);
-      const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
-      if (rc != 0) {
-        const bool timed_out = rc == 124 || rc == 137;
-        std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
-                                    : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
-        if (const std::string bound = disk_bound_note(out, area, build_stopped); !bound.empty()) why += bound + ".\n";
-        why += compiler_errors(out, tree.string());
-        set_part(f->part, why);
-        continue;
-      }
-      const auto unexpected = unexpected_dependencies(
-          (tree / "build").string(), "student_part" + std::to_string(f->part) + ".dir/",
-          {(tree / "tasks").string() + "/", (tree / "include").string() + "/", "/usr/include/", "/usr/lib/gcc/",
-           "/usr/local/include/"});
-      if (!unexpected.empty()) {
-        std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
-                          "the standard library: rejected.\n";
-        for (const auto& u : unexpected) why += "  " + u + "\n";
-        set_part(f->part, why);
-        continue;
-      }
-      report.notes.push_back("part " + std::to_string(f->part) + ": built in " + seconds_text(std::round(took * 10) / 10));
-      binaries[f->part] = (tree / "build" / target).string();
-    }
-    save();
-
-    // 5. Grading, in the sandbox.
-    if (!binaries.empty()) {
-      SandboxOptions sandbox_options = opt.sandbox;
-      sandbox_options.readable.push_back((kit / "scenes").string());
-      Sandbox sandbox(sandbox_options);
-      report.sandbox_layers = sandbox.layers();
-      report.sandbox_missing = sandbox.layers_missing();
-      report.sandbox_ids = sandbox.layer_ids();
-      for (const auto& m : sandbox.layers_missing()) report.notes.push_back("sandbox layer missing: " + m);
-      GradeLimits limits = opt.limits;
-      limits.deadline = deadline;
-      for (const auto& [part, binary] : binaries) {
-        report.parts[part_index(part)] =
-            grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, binary + ".grade.log", redactor);
-        save();  // every process of that run is dead by now
-      }
-      // 6. The renders of the report.
-      if (opt.renders && !opt.html_path.empty()) {
-        RenderJob job;
-        job.kit = kit.string();
-        job.tree = tree.string();
-        job.configure_parts = parts_list;
-        for (const auto& p : report.parts) {
-          job.part_names[p.part] =
-              "part " + std::to_string(p.part) + (expected.count(p.part) ? " (tasks/" + expected.at(p.part) + ")" : "");
-          if (binaries.count(p.part) && p.earned() > 0) job.student_parts.insert(p.part);
-        }
-        job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
-        job.build_seconds = opt.build_seconds;
-        job.fresh_folder = [&area](std::string* error) { return area.fresh_render_folder(error); };
-        job.discard_folder = [&opt](const std::string& dir) {
-          std::error_code ec;
-          if (!opt.keep_work) fs::remove_all(dir, ec);
-        };
-        if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
-        job.bound_note = [&area](const std::string& output, bool stopped) {
-          return disk_bound_note(output, area, stopped);
-        };
-        if (job.seconds < 5) {
-          page.renders_note = "No renders: the submission's time budget ran out.";
-        } else {
-          page.renders_note = "Rendering the scene library...";
-          save();
-          // The renderer is built from the same hostile task files: confined the same way.
-          auto build = [&](const std::vector<std::string>& argv, double seconds, std::string* output) {
-            return kit_build.run(argv, seconds, output);
-          };
-          render_library(job, build, sandbox, page, &report.notes);
-        }
-      } else {
-        page.renders_note = "No renders: turned off (--no-renders).";
-      }
-    } else {
-      page.renders_note = "No renders: no part of the submission built.";
-    }
-    report.complete = true;
-    save();
-    print_report(report, false);
-    if (opt.keep_work) std::printf("build tree and renders kept: %s\n", area.root().c_str());
-    return 0;
-  };
+  // folder goes with its WorkArea on every path out.
+  Graded graded{opt, kit, deadline, manifest, redactor, expected, buildable, report, page, save, set_part, part_index};
   try {
-    return build_and_grade();
+    return build_and_grade(graded);
   } catch (const std::exception& e) {
     report.notes.push_back(std::string("the grader failed (an instructor must look): ") + e.what());
     report.complete = true;
@@ -369,5 +248,155 @@ int grade_submission(const SubmissionOptions& opt) {
     return 2;
   }
 }
+
+namespace {
+
+int build_and_grade(Graded& graded) {
+  auto& [opt, kit, deadline, manifest, redactor, expected, buildable, report, page, save, set_part, part_index] = graded;
+  // 4. A fresh tree: the kit (no solution source) and the task files.
+  const bool namespaces = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
+                                                           "namespaces") == opt.sandbox.without.end();
+  WorkArea area(opt.work.empty() ? fs::temp_directory_path().string() : opt.work,
+                opt.keep_work ? "--keep-work: a tmpfs would end with the grader"
+                : namespaces  ? ""
+                              : "left out (--no-sandbox or --sandbox-without namespaces)");
+  if (opt.keep_work) area.keep();
+  if (!area.unbounded_reason().empty())
+    report.notes.push_back("no tmpfs bounds the submission's files (" + area.unbounded_reason() + "): the builds and " +
+                           "renders are stopped when they pass " + std::to_string(kDiskBytes >> 20) +
+                           " MiB, checked four times a second");
+  const fs::path tree = area.tree();
+  for (const char* item : {"CMakeLists.txt", "include", "lib", "src", "bin"})
+    fs::copy(kit / item, tree / item, fs::copy_options::recursive);
+  fs::create_directories(tree / "tasks");
+  std::string parts_list;
+  for (const TaskFile* f : buildable) {
+    std::ofstream(tree / "tasks" / f->name, std::ios::binary) << f->text;
+    parts_list += (parts_list.empty() ? "" : ";") + std::to_string(f->part);
+  }
+
+  std::map<int, std::string> binaries;
+  const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
+                                                         "landlock") == opt.sandbox.without.end();
+  KitBuild kit_build(tree.string(), landlock);
+  bool build_stopped = false;  // by the bound, where no tmpfs enforces it
+  if (!area.unbounded_reason().empty())
+    kit_build.stop_when([&area, &build_stopped] { return build_stopped = build_stopped || area.exceeded(); });
+  if (!buildable.empty() && !kit_build.unconfined_reason().empty())
+    report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
+                           "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
+  if (!buildable.empty()) {
+    std::string out;
+    const int rc = kit_build.run({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
+                                  "-DPT_PARTS_SUBMITTED=" + parts_list},
+                                 120, &out);
+    if (rc != 0) {
+      std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", out.c_str());
+      for (const TaskFile* f : buildable) set_part(f->part, "not built: the grading kit could not be configured (an instructor must look)");
+      report.notes.push_back("cmake configure failed:\n" + out.substr(0, 4000));
+      buildable.clear();
+    }
+  }
+  for (const TaskFile* f : buildable) {
+    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+    if (left <= 1) {
+      set_part(f->part, "not built: the submission's time budget ran out");
+      continue;
+    }
+    const std::string target = "part" + std::to_string(f->part) + "_tests";
+    std::string out;
+    const auto build_start = Clock::now();
+    build_stopped = false;
+    const int rc = kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", target},
+                                 std::min(opt.build_seconds, left), &out);
+    const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
+    if (rc != 0) {
+      const bool timed_out = rc == 124 || rc == 137;
+      std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
+                                  : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
+      if (const std::string bound = disk_bound_note(out, area, build_stopped); !bound.empty()) why += bound + ".\n";
+      why += compiler_errors(out, tree.string());
+      set_part(f->part, why);
+      continue;
+    }
+    const auto unexpected = unexpected_dependencies(
+        (tree / "build").string(), "student_part" + std::to_string(f->part) + ".dir/",
+        {(tree / "tasks").string() + "/", (tree / "include").string() + "/", "/usr/include/", "/usr/lib/gcc/",
+         "/usr/local/include/"});
+    if (!unexpected.empty()) {
+      std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
+                        "the standard library: rejected.\n";
+      for (const auto& u : unexpected) why += "  " + u + "\n";
+      set_part(f->part, why);
+      continue;
+    }
+    report.notes.push_back("part " + std::to_string(f->part) + ": built in " + seconds_text(std::round(took * 10) / 10));
+    binaries[f->part] = (tree / "build" / target).string();
+  }
+  save();
+
+  // 5. Grading, in the sandbox.
+  if (!binaries.empty()) {
+    SandboxOptions sandbox_options = opt.sandbox;
+    sandbox_options.readable.push_back((kit / "scenes").string());
+    Sandbox sandbox(sandbox_options);
+    report.sandbox_layers = sandbox.layers();
+    report.sandbox_missing = sandbox.layers_missing();
+    report.sandbox_ids = sandbox.layer_ids();
+    for (const auto& m : sandbox.layers_missing()) report.notes.push_back("sandbox layer missing: " + m);
+    GradeLimits limits = opt.limits;
+    limits.deadline = deadline;
+    for (const auto& [part, binary] : binaries) {
+      report.parts[part_index(part)] =
+          grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, binary + ".grade.log", redactor);
+      save();  // every process of that run is dead by now
+    }
+    // 6. The renders of the report.
+    if (opt.renders && !opt.html_path.empty()) {
+      RenderJob job;
+      job.kit = kit.string();
+      job.tree = tree.string();
+      job.configure_parts = parts_list;
+      for (const auto& p : report.parts) {
+        job.part_names[p.part] =
+            "part " + std::to_string(p.part) + (expected.count(p.part) ? " (tasks/" + expected.at(p.part) + ")" : "");
+        if (binaries.count(p.part) && p.earned() > 0) job.student_parts.insert(p.part);
+      }
+      job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
+      job.build_seconds = opt.build_seconds;
+      job.fresh_folder = [&area](std::string* error) { return area.fresh_render_folder(error); };
+      job.discard_folder = [&opt](const std::string& dir) {
+        std::error_code ec;
+        if (!opt.keep_work) fs::remove_all(dir, ec);
+      };
+      if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
+      job.bound_note = [&area](const std::string& output, bool stopped) {
+        return disk_bound_note(output, area, stopped);
+      };
+      if (job.seconds < 5) {
+        page.renders_note = "No renders: the submission's time budget ran out.";
+      } else {
+        page.renders_note = "Rendering the scene library...";
+        save();
+        // The renderer is built from the same hostile task files: confined the same way.
+        auto build = [&](const std::vector<std::string>& argv, double seconds, std::string* output) {
+          return kit_build.run(argv, seconds, output);
+        };
+        render_library(job, build, sandbox, page, &report.notes);
+      }
+    } else {
+      page.renders_note = "No renders: turned off (--no-renders).";
+    }
+  } else {
+    page.renders_note = "No renders: no part of the submission built.";
+  }
+  report.complete = true;
+  save();
+  print_report(report, false);
+  if (opt.keep_work) std::printf("build tree and renders kept: %s\n", area.root().c_str());
+  return 0;
+}
+
+}  // namespace
 
 }  // namespace pt::grade
