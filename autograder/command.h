@@ -26,10 +26,20 @@ struct CommandOptions {
   // Runs in the child between fork and exec (confinement); a non-empty
   // return is what failed, and the child exits with status 126.
   std::function<std::string()> in_child;
+  // Asked about every quarter second while the program runs; true sends its
+  // process group SIGTERM: how a bound that no limit enforces is kept.
+  std::function<bool()> stop_when;
 };
 
 // The same with a bound on the output kept, a parent-death signal and a step
 // before exec.
 int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options);
+
+// Blanks this process's command line where the kernel reads it for
+// /proc/PID/cmdline, leaving `name`: the grader's names the results, the
+// report and the kit, and code under test can read /proc (the grader's own
+// entry without a PID namespace; the sandbox's first process, a copy of the
+// grader, with one). Call it once the arguments are parsed into copies.
+void hide_command_line(int argc, char** argv, const char* name);
 
 }  // namespace pt::grade

@@ -17,6 +17,7 @@
 
 #include "check_submission.h"
 #include "checks.h"
+#include "command.h"
 #include "grade_part.h"
 #include "manifest.h"
 #include "redact.h"
@@ -354,6 +355,7 @@ int main(int argc, char** argv) {
   }
 
   scrub_gtest_environment();
+  hide_command_line(argc, argv, "pt-grade");
   try {
     if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
     if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));

@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "landlock.h"
+#include "work_area.h"
 
 namespace pt::grade {
 
@@ -64,11 +65,12 @@ int KitBuild::run(const std::vector<std::string>& argv, double seconds, std::str
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.1f", seconds);
   std::string cmd = "exec timeout --kill-after=5 " + std::string(secs) + " prlimit --as=" +
-                    std::to_string(kBuildAddressSpace) + " --";
+                    std::to_string(kBuildAddressSpace) + " --fsize=" + std::to_string(kDiskBytes) + " --";
   for (const auto& a : argv) cmd += " " + shell_quoted(a);
   CommandOptions options;
   options.max_output = kBuildOutputKept;
-  options.parent_death_signal = SIGTERM;  // `timeout` passes it on to the whole build
+  options.parent_death_signal = SIGTERM;
+  options.stop_when = over_;  // `timeout` passes it on to the whole build
   const std::string tmp = tree_ + "/tmp";
   const int ruleset = ruleset_;
   options.in_child = [tmp, ruleset]() -> std::string {

@@ -11,14 +11,16 @@
 //    tree, writes only the tree, executes only the system's programs and the
 //    kit's bin/ (tests/hostile/incbin_pasted);
 //  - under a wall-clock limit for its whole process group (coreutils
-//    `timeout`) and a 4 GiB address-space limit per process (util-linux
-//    `prlimit`) (tests/hostile/compile_time_bomb);
+//    `timeout`), a 4 GiB address-space limit and a 512 MiB file-size limit
+//    per process (util-linux `prlimit`) (tests/hostile/compile_time_bomb,
+//    build_fill; the tree's whole size is work_area.h's);
 //  - sent SIGTERM when the grader dies, which `timeout` passes on to the
 //    compiler: a grader killed from outside leaves no build running
 //    (tests/hostile/grader_killed_building);
 //  - with at most 1 MiB of its output kept (and the kit's compiler stops
 //    after 20 errors), so that an error flood costs the grader no memory
 //    (tests/hostile/error_flood).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,8 +42,13 @@ class KitBuild {
   // which the first 1 MiB is kept. Exit status 124 or 137: the time ran out.
   int run(const std::vector<std::string>& argv, double seconds, std::string* output) const;
 
+  // A bound no limit enforces (the work area's size on disk): the build is
+  // killed when this says so.
+  void stop_when(std::function<bool()> over) { over_ = std::move(over); }
+
  private:
   std::string tree_;
+  std::function<bool()> over_;
   int ruleset_ = -1;
   std::string unconfined_;
 };

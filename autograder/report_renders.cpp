@@ -17,15 +17,24 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// The render's time limit, and the disk bound where no tmpfs enforces it:
+// asked at least every 200 ms while the render runs.
 class RenderWatch : public RunObserver {
  public:
-  RenderWatch(Clock::time_point end, double limit) : end_(end), limit_(limit) {}
+  RenderWatch(Clock::time_point end, double limit, const std::function<bool()>& over)
+      : end_(end), limit_(limit), over_(over) {}
   void on_channel(std::string_view) override {}
-  Deadline deadline() const override { return {end_, limit_}; }
+  Deadline deadline() const override {
+    if (over_ && over_()) stopped_ = true;
+    return {stopped_ ? Clock::now() : end_, limit_};
+  }
+  bool stopped_by_bound() const { return stopped_; }
 
  private:
   Clock::time_point end_;
   double limit_;
+  std::function<bool()> over_;
+  mutable bool stopped_ = false;
 };
 
 double seconds_until(Clock::time_point t) { return std::chrono::duration<double>(t - Clock::now()).count(); }
@@ -53,9 +62,19 @@ RenderComparison comparison_of(const SceneRender& s) {
 // One render of one scene by `renderer` in the sandbox, judged by the kit's
 // pt-library-check into `checked` (a folder the sandbox cannot write).
 RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, const fs::path& renderer,
-                                  const fs::path& out, const fs::path& checked, Sandbox& sandbox,
-                                  Clock::time_point end) {
+                                  const fs::path& checked, Sandbox& sandbox, Clock::time_point end) {
   RenderComparison c = comparison_of(s);
+  std::string error;
+  const fs::path out = job.fresh_folder(&error);
+  if (out.empty()) {
+    c.error = "not rendered: " + error + " (an instructor must look)";
+    return c;
+  }
+  struct Discard {  // the EXR is judged, and its PNGs drawn elsewhere: the folder goes
+    const RenderJob& job;
+    const fs::path& out;
+    ~Discard() { job.discard_folder(out.string()); }
+  } discard{job, out};
   // Each render gets at most a third of what is left, and 20 s: a renderer
   // that hangs on the first scene leaves time for the others.
   const double limit = std::max(1.0, std::min(20.0, seconds_until(end) / 3));
@@ -69,17 +88,21 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
   req.args.insert(req.args.end(), {"-t", "1"});  // one thread: the sandbox counts processes, and the page times nothing
   req.output_dir = out.string();
   RenderWatch watch(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)),
-                    limit);
+                    limit, job.over_bound);
   const RunOutcome run = sandbox.run(req, watch);
+  const std::string bound = job.bound_note(run.output, watch.stopped_by_bound());
   if (!run.exit.exited_ok()) {
     std::string tail = run.output.size() > 400 ? "..." + run.output.substr(run.output.size() - 400) : run.output;
-    c.error = "the renderer " + run.exit.describe() + (tail.empty() ? "" : ":\n" + tail);
+    c.error = (bound.empty() ? "" : bound + ": ") + "the renderer " +
+              (watch.stopped_by_bound() ? std::string("was stopped") : run.exit.describe()) +
+              (tail.empty() ? "" : ":\n" + tail);
     return c;
   }
   // The run is over and every process of it dead: nothing can swap the file
   // after this check. A link could point the trusted reader anywhere.
   if (!fs::is_regular_file(fs::symlink_status(exr))) {
-    c.error = "the renderer exited normally but left no EXR at " + exr.filename().string();
+    c.error = (bound.empty() ? "" : bound + ": ") + "the renderer exited normally but left no EXR at " +
+              exr.filename().string();
     return c;
   }
   fs::create_directories(checked);
@@ -140,10 +163,10 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
   }
 
   // What to render: the kit's trusted plan.
-  const fs::path renders = job.renders_dir;
+  // (Its output paths are rewritten into each render's own folder.)
   std::string plan_text;
   run_command({(fs::path(job.kit) / "bin" / "pt-library-check").string(), "plan", "--library",
-               (fs::path(job.kit) / "scenes" / "library.json").string(), "--out", renders.string()},
+               (fs::path(job.kit) / "scenes" / "library.json").string(), "--out", (tree / "plan").string()},
               &plan_text);
   std::vector<SceneRender> scenes;
   try {
@@ -164,7 +187,7 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
     if (seconds_until(end) < 2) {
       c.error = "not rendered: the report's render budget (" + std::to_string(int(job.seconds)) + " s) ran out";
     } else {
-      c = render_and_check(job, s, tree / "build" / "pathtracer", renders, tree / "checked", sandbox, end);
+      c = render_and_check(job, s, tree / "build" / "pathtracer", tree / "checked", sandbox, end);
       c.student_parts.assign(job.student_parts.begin(), job.student_parts.end());
       if (c.flagged || !c.error.empty()) wrong.push_back(page.renders.size());
     }
@@ -186,13 +209,11 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
                 std::max(1.0, std::min(job.build_seconds, seconds_until(end))), &out) != 0)
         continue;
       tried.insert(m);
-      const fs::path dir = renders / ("part" + std::to_string(m));
-      fs::create_directories(dir);
       for (auto* c : flagged) {
         if (seconds_until(end) < 2) break;
         for (const auto& s : scenes)
           if (s.name == c->scene) {
-            const RenderComparison one = render_and_check(job, s, tree / "build" / target, dir,
+            const RenderComparison one = render_and_check(job, s, tree / "build" / target,
                                                           tree / "checked" / ("part" + std::to_string(m)), sandbox, end);
             if (one.flagged || !one.error.empty()) alone[c->scene].push_back(m);
           }

@@ -35,9 +35,18 @@ using BuildRunner = std::function<int(const std::vector<std::string>& argv, doub
 struct RenderJob {
   std::string kit;                 // the grading kit (its bin/pt-library-check, scenes/)
   std::string tree;                // the submission's build tree (tree/build is configured)
-  // A fresh folder for the renderer's images, outside the tree: the sandbox
-  // user must be able to reach it (the tree is the grader's, mode 0700).
-  std::string renders_dir;
+  // A new empty folder for one render's images, made by the grader where
+  // the sandbox cannot create anything (work_area.h), handed to the sandbox's
+  // user; "" with the reason in *error when none can be made. Each render
+  // has its own: nothing a render leaves is in a path the grader uses next.
+  std::function<std::string(std::string* error)> fresh_folder;
+  // Removes a render's folder once its image is judged.
+  std::function<void(const std::string&)> discard_folder;
+  // True when the submission's files are over the grader's disk bound: a
+  // render is then stopped, and its image judged missing.
+  std::function<bool()> over_bound;
+  // "" or what the bound did to a render (its output; stopped by over_bound).
+  std::function<std::string(const std::string& output, bool stopped)> bound_note;
   std::string configure_parts;     // PT_PARTS_SUBMITTED as configured ("1;3")
   std::set<int> student_parts;     // the parts the renders take from the student
   std::map<int, std::string> part_names;  // n -> "part n (tasks/partn_....cpp)"

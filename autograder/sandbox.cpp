@@ -1,6 +1,7 @@
 #include "sandbox.h"
 
 #include <fcntl.h>
+#include <linux/openat2.h>
 #include <poll.h>
 #include <pwd.h>
 #include <signal.h>
@@ -306,13 +307,29 @@ std::string mebibytes(uint64_t bytes) {
   return os.str();
 }
 
+// Hands a folder the grader made to the sandbox's user. The path is opened
+// without following any link (openat2's RESOLVE_NO_SYMLINKS, or O_NOFOLLOW
+// for its last part on kernels before 5.6), so a link planted by an earlier
+// run can never make the grader give away another folder (results.json's).
+bool hand_over(const std::string& dir, uid_t uid, gid_t gid) {
+  open_how how{};
+  how.flags = O_RDONLY | O_DIRECTORY | O_CLOEXEC;
+  how.resolve = RESOLVE_NO_SYMLINKS;
+  int fd = static_cast<int>(::syscall(SYS_openat2, AT_FDCWD, dir.c_str(), &how, sizeof how));
+  if (fd < 0 && errno == ENOSYS) fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fchown(fd, uid, gid) == 0;
+  ::close(fd);
+  return ok;
+}
+
 }  // namespace
 
 Sandbox::Sandbox(SandboxOptions options) : options_(std::move(options)), plan_(new Plan) {
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/pt-grade-XXXXXX";
   if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder in " + pattern);
-  scratch_ = pattern;
+  scratch_ = fs::canonical(pattern).string();  // no link in it: hand_over() follows none
   // Every orphan of a run is handed to the grader, which kills it: the last
   // resort when no PID namespace holds the run together.
   ::prctl(PR_SET_CHILD_SUBREAPER, 1);
@@ -481,7 +498,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
     r.exit = not_started("cannot create " + workdir + ": " + std::strerror(errno));
     return r;
   }
-  if (plan_->switch_user && !plan_->tmpfs && ::chown(workdir.c_str(), plan_->uid, plan_->gid) != 0) {
+  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid)) {
     RunOutcome r;
     r.exit = not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
     return r;
@@ -490,7 +507,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   absolute.binary = fs::absolute(request.binary).lexically_normal().string();
   if (!request.output_dir.empty()) {
     absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
-    if (plan_->switch_user && ::chown(absolute.output_dir.c_str(), plan_->uid, plan_->gid) != 0) {
+    if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid)) {
       RunOutcome r;
       r.exit = not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
       return r;

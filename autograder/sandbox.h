@@ -58,7 +58,8 @@ struct RunRequest {
   std::string key;
   // When not empty, an existing folder the run may also write (its private
   // working directory is discarded with it): where a render leaves its images.
-  // Handed to the sandbox user when the grader is root.
+  // Handed to the sandbox user when the grader is root, never through a link:
+  // its path must hold none (a fresh folder of the grader's: work_area.h).
   std::string output_dir;
 };
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <set>
@@ -21,6 +22,7 @@
 #include "report_renders.h"
 #include "source_scan.h"
 #include "submission_files.h"
+#include "work_area.h"
 
 namespace pt::grade {
 
@@ -103,6 +105,28 @@ std::string intake_rejection(const TaskFile& f, const std::set<std::string>& hea
   return "";
 }
 
+namespace {
+
+// What steps 1 to 3 leave for steps 4 to 6 (build_and_grade).
+struct Graded {
+  const SubmissionOptions& opt;
+  const fs::path& kit;
+  const Clock::time_point& deadline;
+  const Manifest& manifest;
+  const Redactor& redactor;
+  const std::map<int, std::string>& expected;
+  std::vector<const TaskFile*>& buildable;
+  Report& report;
+  HtmlReport& page;
+  std::function<void()> save;
+  std::function<void(int, const std::string&)> set_part;
+  std::function<size_t(int)> part_index;
+};
+
+int build_and_grade(Graded& graded);
+
+}  // namespace
+
 int grade_submission(const SubmissionOptions& opt) {
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt.budget_seconds));
@@ -182,15 +206,39 @@ int grade_submission(const SubmissionOptions& opt) {
   }
   save();
 
-  // 4. A fresh tree: the kit (no solution source) and the task files.
-  fs::path work = opt.work.empty() ? fs::temp_directory_path() : fs::path(opt.work);
-  fs::create_directories(work);
-  std::string pattern = (work / "pt-submission-XXXXXX").string();
-  if (!::mkdtemp(pattern.data())) {
-    std::fprintf(stderr, "pt-grade: cannot create a folder in %s\n", work.c_str());
+  // Steps 4 to 6 work in a folder of the grader's own (work_area.h). An error
+  // not foreseen still ends in a complete report saying what failed, and the
+  // folder goes with its WorkArea on every path out.
+  Graded graded{opt, kit, deadline, manifest, redactor, expected, buildable, report, page, save, set_part, part_index};
+  try {
+    return build_and_grade(graded);
+  } catch (const std::exception& e) {
+    report.notes.push_back(std::string("the grader failed (an instructor must look): ") + e.what());
+    report.complete = true;
+    save();
+    print_report(report, false);
+    std::fprintf(stderr, "pt-grade: %s\n", e.what());
     return 2;
   }
-  const fs::path tree = pattern;
+}
+
+namespace {
+
+int build_and_grade(Graded& graded) {
+  auto& [opt, kit, deadline, manifest, redactor, expected, buildable, report, page, save, set_part, part_index] = graded;
+  // 4. A fresh tree: the kit (no solution source) and the task files.
+  const bool namespaces = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
+                                                           "namespaces") == opt.sandbox.without.end();
+  WorkArea area(opt.work.empty() ? fs::temp_directory_path().string() : opt.work,
+                opt.keep_work ? "--keep-work: a tmpfs would end with the grader"
+                : namespaces  ? ""
+                              : "left out (--no-sandbox or --sandbox-without namespaces)");
+  if (opt.keep_work) area.keep();
+  if (!area.unbounded_reason().empty())
+    report.notes.push_back("no tmpfs bounds the submission's files (" + area.unbounded_reason() + "): the builds and " +
+                           "renders are stopped when they pass " + std::to_string(kDiskBytes >> 20) +
+                           " MiB, checked four times a second");
+  const fs::path tree = area.tree();
   for (const char* item : {"CMakeLists.txt", "include", "lib", "src", "bin"})
     fs::copy(kit / item, tree / item, fs::copy_options::recursive);
   fs::create_directories(tree / "tasks");
@@ -203,11 +251,13 @@ int grade_submission(const SubmissionOptions& opt) {
   std::map<int, std::string> binaries;
   const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
                                                          "landlock") == opt.sandbox.without.end();
-  const KitBuild kit_build(tree.string(), landlock);
+  KitBuild kit_build(tree.string(), landlock);
+  bool build_stopped = false;  // by the bound, where no tmpfs enforces it
+  if (!area.unbounded_reason().empty())
+    kit_build.stop_when([&area, &build_stopped] { return build_stopped = build_stopped || area.exceeded(); });
   if (!buildable.empty() && !kit_build.unconfined_reason().empty())
     report.notes.push_back("the build was not confined (" + kit_build.unconfined_reason() +
                            "): the compiler could read any file this grader can, e.g. with an assembler .incbin");
-  std::string renders_dir;  // made with the renders, removed with the tree
   if (!buildable.empty()) {
     std::string out;
     const int rc = kit_build.run({"cmake", "-S", tree.string(), "-B", (tree / "build").string(), "-G", "Ninja",
@@ -237,6 +287,7 @@ int grade_submission(const SubmissionOptions& opt) {
     const std::string target = "part" + std::to_string(f->part) + "_tests";
     std::string out;
     const auto build_start = Clock::now();
+    build_stopped = false;
     const int rc = kit_build.run({"cmake", "--build", (tree / "build").string(), "--target", target},
                                  std::min(opt.build_seconds, left), &out);
     const double took = std::chrono::duration<double>(Clock::now() - build_start).count();
@@ -244,6 +295,7 @@ int grade_submission(const SubmissionOptions& opt) {
       const bool timed_out = rc == 124 || rc == 137;
       std::string why = timed_out ? f->where + " did not build within " + seconds_text(opt.build_seconds) + ":\n"
                                   : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
+      if (const std::string bound = disk_bound_note(out, area, build_stopped); !bound.empty()) why += bound + ".\n";
       why += compiler_errors(out, tree.string());
       set_part(f->part, why);
       continue;
@@ -294,11 +346,16 @@ int grade_submission(const SubmissionOptions& opt) {
       }
       job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
       job.build_seconds = opt.build_seconds;
-      std::string renders_pattern = (work / "pt-renders-XXXXXX").string();
-      if (::mkdtemp(renders_pattern.data())) renders_dir = job.renders_dir = renders_pattern;
-      if (renders_dir.empty()) {
-        page.renders_note = "No renders: cannot create a folder in " + work.string();
-      } else if (job.seconds < 5) {
+      job.fresh_folder = [&area](std::string* error) { return area.fresh_render_folder(error); };
+      job.discard_folder = [&opt](const std::string& dir) {
+        std::error_code ec;
+        if (!opt.keep_work) fs::remove_all(dir, ec);
+      };
+      if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
+      job.bound_note = [&area](const std::string& output, bool stopped) {
+        return disk_bound_note(output, area, stopped);
+      };
+      if (job.seconds < 5) {
         page.renders_note = "No renders: the submission's time budget ran out.";
       } else {
         page.renders_note = "Rendering the scene library...";
@@ -318,15 +375,10 @@ int grade_submission(const SubmissionOptions& opt) {
   report.complete = true;
   save();
   print_report(report, false);
-  if (!opt.keep_work) {
-    std::error_code ec;
-    fs::remove_all(tree, ec);
-    if (!renders_dir.empty()) fs::remove_all(renders_dir, ec);
-  } else {
-    std::printf("build tree kept: %s\n", tree.c_str());
-    if (!renders_dir.empty()) std::printf("renders kept: %s\n", renders_dir.c_str());
-  }
+  if (opt.keep_work) std::printf("build tree and renders kept: %s\n", area.root().c_str());
   return 0;
 }
+
+}  // namespace
 
 }  // namespace pt::grade

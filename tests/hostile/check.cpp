@@ -22,10 +22,13 @@
 // the run is left. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer
 // the case needs is missing here), 2 could not check.
 #include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -51,6 +54,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using pt::grade::hide_command_line;
 using pt::grade::run_command;
 
 std::string read_file(const fs::path& path) {
@@ -171,6 +175,61 @@ std::string layer_pattern(const std::string& stopped_at) {
   return "";
 }
 
+// The bytes in use on the filesystem that holds `path`.
+uint64_t used_bytes(const std::string& path) {
+  struct statvfs s{};
+  if (::statvfs(path.c_str(), &s) != 0) return 0;
+  return (uint64_t(s.f_blocks) - s.f_bfree) * s.f_frsize;
+}
+
+// The most the filesystem of `path` held beyond its use at the start, sampled
+// every 20 ms while the grader runs: what the submission cost the host's disk
+// (other work on the machine adds to it; a bound is set with room for that).
+class DiskPeak {
+ public:
+  explicit DiskPeak(std::string path) : path_(std::move(path)), start_(used_bytes(path_)) {
+    sampler_ = std::thread([this] {
+      while (!stop_) {
+        const uint64_t used = used_bytes(path_);
+        if (used > peak_) peak_ = used;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    });
+  }
+  ~DiskPeak() { finish(); }
+  uint64_t finish() {
+    if (sampler_.joinable()) {
+      stop_ = true;
+      sampler_.join();
+    }
+    return peak_ > start_ ? peak_ - start_ : 0;
+  }
+
+ private:
+  std::string path_;
+  uint64_t start_;
+  std::atomic<uint64_t> peak_{0};
+  std::atomic<bool> stop_{false};
+  std::thread sampler_;
+};
+
+// The folder of the results: who owns it, its mode, what is in it. Nothing
+// but the grader's own files may change in it.
+struct FolderState {
+  uid_t owner = 0;
+  mode_t mode = 0;
+  std::set<std::string> entries;
+};
+
+FolderState folder_state(const fs::path& dir) {
+  FolderState f;
+  struct stat st{};
+  if (::lstat(dir.c_str(), &st) == 0) f.owner = st.st_uid, f.mode = st.st_mode;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) f.entries.insert(e.path().filename().string());
+  return f;
+}
+
 struct Checker {
   std::vector<std::string> failures;
   void expect(bool ok, const std::string& what) {
@@ -208,6 +267,10 @@ int main(int argc, char** argv) {
                          "--pt-grade PT_GRADE [--fallback] [--submission [--tasks DIR] [--zip FILE]] -- COMMAND...\n");
     return 2;
   }
+  // A harness (this program, or Gradescope's) should keep the grader's paths
+  // off its own command line too: without a PID namespace the code under test
+  // reads every ancestor's (proc_cmdline's fallback).
+  hide_command_line(argc, argv, "pt-hostile-check");
   json expect, manifest;
   try {
     expect = json::parse(read_file(case_dir + "/expect.json"));
@@ -277,8 +340,12 @@ int main(int argc, char** argv) {
   // process check below finds them whatever they have become.
   ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   ::unlink(results_path.c_str());
+  const fs::path results_dir = fs::absolute(results_path).parent_path();
+  const FolderState before = folder_state(results_dir);
   const double kill_after = expect.value("kill_grader_after", 0.0);
+  DiskPeak disk(results_dir.string());
   const int status = run_command(command, nullptr, kill_after);
+  const uint64_t disk_peak = disk.finish();
   const std::string written = read_file(results_path);
   std::this_thread::sleep_for(std::chrono::duration<double>(expect.value("settle_seconds", 0.0)));
   const std::string settled = read_file(results_path);
@@ -305,6 +372,25 @@ int main(int argc, char** argv) {
     std::error_code ec;
     c.expect(fs::is_empty(work, ec) || !fs::exists(work), "the grader left files in " + work);
   }
+  // Nothing written beside the grader's own files, the folder still the grader's.
+  const FolderState after = folder_state(results_dir);
+  // (results.json.fallback: the same case's other test, at the same time.)
+  auto grader_wrote = [&](const std::string& e) {
+    if (before.entries.count(e)) return true;
+    for (const std::string& p : {results_path, argument_of(command, "--html"), work})
+      if (!p.empty() && e.rfind(fs::path(p).filename().string(), 0) == 0) return true;
+    return false;
+  };
+  for (const auto& e : after.entries) c.expect(grader_wrote(e), "something else wrote " + (results_dir / e).string());
+  c.expect(after.owner == before.owner && after.mode == before.mode,
+           results_dir.string() + " changed owner or mode (" + std::to_string(before.owner) + " -> " +
+               std::to_string(after.owner) + ")");
+  std::printf("disk: at most %.0f MiB more in use on the results' filesystem while the grader ran\n",
+              double(disk_peak) / (1 << 20));
+  if (expect.contains("max_disk_mib"))
+    c.expect(disk_peak <= expect["max_disk_mib"].get<uint64_t>() << 20,
+             "the grader's disk use reached " + std::to_string(disk_peak >> 20) + " MiB, over " +
+                 std::to_string(expect["max_disk_mib"].get<uint64_t>()) + " MiB");
   c.expect(!written.empty(), "no results.json at " + results_path);
   c.expect(settled == written, "results.json changed after the grader had finished");
   json results;
@@ -428,6 +514,15 @@ int main(int argc, char** argv) {
         c.expect(false, "results.json holds a line of " + fs::relative(file, source_dir).string() + ": " + line);
         break;
       }
+    }
+
+  // The grader's own paths (its command line) are not the code's to read.
+  if (expect.value("no_grader_paths", false))
+    for (const char* flag : {"--json", "--html", "--kit"}) {
+      const std::string path = argument_of(command, flag);
+      if (!path.empty())
+        c.expect(settled.find(fs::absolute(path).string()) == std::string::npos,
+                 "the report shows the grader's " + std::string(flag) + " " + path);
     }
 
   std::printf("score %g of %g (expected %g)\n", total, max_score, want_score);
