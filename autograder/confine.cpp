@@ -11,11 +11,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "landlock.h"
 #include "seccomp_filter.h"
@@ -158,23 +160,36 @@ void kill_descendants(const std::set<pid_t>& spare) {
   };
   // Stop the whole tree first: a stopped process cannot fork, so a fork bomb
   // cannot refill what is killed. Walk again until no new process shows up.
-  std::set<pid_t> stopped;
-  for (int round = 0; round < 1000; ++round) {
-    bool grew = false;
-    for (pid_t pid : tree())
-      if (stopped.insert(pid).second) {
-        ::kill(pid, SIGSTOP);
-        grew = true;
-      }
-    if (!grew) break;
-  }
-  for (pid_t pid : stopped) ::kill(pid, SIGKILL);
+  auto stop_and_kill = [&] {
+    std::set<pid_t> stopped;
+    for (int round = 0; round < 1000; ++round) {
+      bool grew = false;
+      for (pid_t pid : tree())
+        if (stopped.insert(pid).second) {
+          ::kill(pid, SIGSTOP);
+          grew = true;
+        }
+      if (!grew) break;
+    }
+    for (pid_t pid : stopped) ::kill(pid, SIGKILL);
+  };
+  stop_and_kill();
   // They die; the orphans among them are handed to this subreaper to reap.
+  // The kernel's lists of children may miss a process while others fork and
+  // exit around it (proc(5): "children" is not reliable then), so a walk can
+  // miss one: a child still alive when nothing is left to reap is killed
+  // again, never waited for while it runs (hostile-fallback:fork_bomb once
+  // held the grader in waitpid on a missed process until ctest's limit).
   for (int round = 0; round < 100000; ++round) {
     std::set<pid_t> left = children_of(::getpid());
     for (pid_t pid : spare) left.erase(pid);
     if (left.empty()) break;
-    for (pid_t pid : left) ::waitpid(pid, nullptr, 0);
+    bool reaped = false;
+    for (pid_t pid : left) reaped = ::waitpid(pid, nullptr, WNOHANG) > 0 || reaped;
+    if (!reaped) {
+      stop_and_kill();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
   }
 }
 
