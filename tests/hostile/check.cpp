@@ -374,7 +374,6 @@ int main(int argc, char** argv) {
   }
   // Nothing written beside the grader's own files, the folder still the grader's.
   const FolderState after = folder_state(results_dir);
-  // (results.json.fallback: the same case's other test, at the same time.)
   auto grader_wrote = [&](const std::string& e) {
     if (before.entries.count(e)) return true;
     for (const std::string& p : {results_path, argument_of(command, "--html"), work})
