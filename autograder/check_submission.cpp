@@ -200,7 +200,10 @@ int check_submission(const CheckOptions& opt) {
     std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
     return 2;
   }
-  const Manifest manifest = read_manifest(manifest_path.string());
+  // The student cannot know whether the instructor counts the extension
+  // tasks, so they are shown at 0 points, as the grader shows them by default.
+  Manifest manifest = read_manifest(manifest_path.string());
+  leave_extensions_uncounted(manifest);
   Report report;
   report.hidden_not_run = hidden_not_run_in(source.string());
   Sandbox sandbox(opt.sandbox);

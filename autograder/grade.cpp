@@ -35,6 +35,7 @@ struct Options {
   double submission_seconds = 540;
   SandboxOptions sandbox;
   std::string manifest;
+  bool count_extensions = false;
 };
 
 // A trusted binary's own listing (`pt-grade manifest`), or, with no manifest,
@@ -70,9 +71,11 @@ PartManifest tests_of(int part, const std::string& binary, const Manifest* manif
   return list_tests(part, binary, sandbox);
 }
 
-std::unique_ptr<Manifest> load_manifest(const std::string& path) {
+std::unique_ptr<Manifest> load_manifest(const std::string& path, bool count_extensions) {
   if (path.empty()) return nullptr;
-  return std::make_unique<Manifest>(read_manifest(path));
+  auto manifest = std::make_unique<Manifest>(read_manifest(path));
+  if (!count_extensions) leave_extensions_uncounted(*manifest);
+  return manifest;
 }
 
 Report start_report(const Sandbox& sandbox) {
@@ -94,7 +97,7 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
     if (fs::is_regular_file(found)) opt.manifest = found.string();
   }
   // Read once, before any code under test runs, and never again.
-  const auto manifest = load_manifest(opt.manifest);
+  const auto manifest = load_manifest(opt.manifest, opt.count_extensions);
   const Redactor redactor(manifest ? manifest->solution_lines : std::set<uint64_t>());
   Sandbox sandbox(opt.sandbox);
   Report report = start_report(sandbox);
@@ -144,7 +147,7 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
 }
 
 PartResult grade_one(int part, const std::string& binary, const Options& opt) {
-  const auto manifest = load_manifest(opt.manifest);
+  const auto manifest = load_manifest(opt.manifest, opt.count_extensions);
   Sandbox sandbox(opt.sandbox);
   std::vector<std::string> notes;
   const PartManifest tests = tests_of(part, binary, manifest.get(), sandbox, notes);
@@ -260,6 +263,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--binary", binary_args, "grade FILE as part N instead of DIR/tests/partN_tests")
       ->type_name("N=FILE");
   add_grading(run_cmd);
+  run_cmd->add_flag("--count-extensions", opt.count_extensions,
+                    "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
   run_cmd->add_option("--budget", opt.submission_seconds, "time allowed to all parts together")
       ->check(seconds)
       ->type_name("SECONDS")
@@ -323,6 +328,8 @@ int main(int argc, char** argv) {
       ->type_name("SECONDS")
       ->capture_default_str();
   add_grading(submission_cmd);
+  submission_cmd->add_flag("--count-extensions", sub.count_extensions,
+                           "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
 
   CheckOptions check;
 #if defined(PT_SOURCE_ROOT) && defined(PT_BINARY_ROOT)

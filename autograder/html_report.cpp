@@ -162,7 +162,8 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
       any_failure = true;
       h << "<div class=fail><h3>" << esc(t.test.task) << " " << esc(t.test.name) << "<span class=tag>"
         << num(t.test.points) << (t.test.points == 1 ? " point" : " points") << "</span>"
-        << (t.test.hidden ? "<span class=\"tag hidden-tag\">hidden</span>" : "") << "<span class=tag>"
+        << (t.test.hidden ? "<span class=\"tag hidden-tag\">hidden</span>" : "")
+        << (t.test.extension ? "<span class=tag>extension</span>" : "") << "<span class=tag>"
         << esc(t.status_name()) << "</span></h3>";
       auto row = page.handouts.test_rows.find(t.test.name);
       if (row != page.handouts.test_rows.end()) h << "<div class=muted>Checks: " << esc(plain(row->second)) << "</div>";

@@ -42,6 +42,10 @@ ManifestTest parse_test(int part, const json& j) {
   if (visibility != "visible" && visibility != "hidden")
     throw std::runtime_error(t.name + ": visibility must be \"visible\" or \"hidden\"");
   t.hidden = visibility == "hidden";
+  if (auto e = j.find("extension"); e != j.end()) {
+    if (!e->is_boolean()) throw std::runtime_error(t.name + ": \"extension\" must be true or false");
+    t.extension = e->get<bool>();
+  }
   return t;
 }
 
@@ -52,7 +56,9 @@ void check_unique(const PartManifest& tests) {
 }
 
 json to_json(const ManifestTest& t) {
-  return {{"test", t.name}, {"task", t.task}, {"points", t.points}, {"visibility", t.hidden ? "hidden" : "visible"}};
+  json j = {{"test", t.name}, {"task", t.task}, {"points", t.points}, {"visibility", t.hidden ? "hidden" : "visible"}};
+  if (t.extension) j["extension"] = true;
+  return j;
 }
 
 }  // namespace
@@ -61,6 +67,14 @@ double max_score(const PartManifest& tests) {
   double sum = 0;
   for (const auto& t : tests) sum += t.points;
   return sum;
+}
+
+int leave_extensions_uncounted(Manifest& manifest) {
+  int n = 0;
+  for (auto& [part, tests] : manifest.parts)
+    for (auto& t : tests)
+      if (t.extension) t.points = 0, ++n;
+  return n;
 }
 
 PartManifest parse_listing(int part, const std::string& text) {

@@ -17,6 +17,7 @@ struct ManifestTest {
   std::string task;  // P1T3
   double points = 0;
   bool hidden = false;
+  bool extension = false;  // an optional task's test (P5T3): 0 points unless counted
 };
 
 using PartManifest = std::vector<ManifestTest>;
@@ -34,6 +35,11 @@ PartManifest parse_listing(int part, const std::string& text);
 
 // Reads a manifest file; throws std::runtime_error naming the file and the fault.
 Manifest read_manifest(const std::string& path);
+
+// Extension tests keep their points only when the instructor counts them
+// (`--count-extensions`); otherwise they are graded and reported at 0 points.
+// Returns how many tests it set to 0.
+int leave_extensions_uncounted(Manifest& manifest);
 
 // Writes it atomically (temporary file, then rename). `sources` names the
 // binary each part was listed from.

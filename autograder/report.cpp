@@ -99,7 +99,8 @@ void write_results_json(const std::string& path, const Report& report) {
       std::string output = t.passed() ? "" : t.message;
       if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + t.output;
       score += t.passed() ? t.test.points : 0;
-      tests.push_back({{"name", t.test.task + " " + t.test.name},
+      const std::string uncounted = t.test.extension && t.test.points == 0 ? " (extension, not counted)" : "";
+      tests.push_back({{"name", t.test.task + " " + t.test.name + uncounted},
                        {"score", t.passed() ? t.test.points : 0.0},
                        {"max_score", t.test.points},
                        {"status", t.passed() ? "passed" : "failed"},
@@ -144,14 +145,18 @@ void print_report(const Report& report, bool show_hidden) {
   Tally all;
   HiddenNotRun all_unrun;
   for (const auto& p : report.parts) {
-    Tally part, hidden;
+    Tally part, hidden, uncounted;
     for (const auto& t : p.tests) {
       part.add(t);
       all.add(t);
       if (t.test.hidden) hidden.add(t);
+      if (t.test.extension && t.test.points == 0) uncounted.add(t);
     }
     std::string extra =
         hidden.total == 0 ? "" : "including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points";
+    if (uncounted.total > 0)
+      extra += (extra.empty() ? "" : "; ") + std::string("including extension tests, not counted: ") +
+               uncounted.tests();
     if (auto it = report.hidden_not_run.find(p.part); it != report.hidden_not_run.end() && it->second.tests > 0) {
       extra += (extra.empty() ? "" : "; ") + std::string("hidden: ") + std::to_string(it->second.tests) + " tests, " +
                points_text(it->second.points) + " not run here";
@@ -176,8 +181,9 @@ void print_report(const Report& report, bool show_hidden) {
         std::printf("  %s (hidden test, %s)\n", t.test.task.c_str(), points_text(t.test.points).c_str());
         continue;
       }
-      std::printf("  %s %s%s (%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
-                  points_text(t.test.points).c_str());
+      std::printf("  %s %s%s (%s%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
+                  points_text(t.test.points).c_str(),
+                  t.test.extension && t.test.points == 0 ? ": an extension task, not counted" : "");
       std::fputs(folded(t.message, "      ").c_str(), stdout);
       if (!t.output.empty()) {
         std::printf("      last output:\n");

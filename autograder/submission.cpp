@@ -139,7 +139,8 @@ int grade_submission(const SubmissionOptions& opt) {
     return 2;
   }
   // Read once, before any code under test is built or run.
-  const Manifest manifest = read_manifest((kit / "manifest.json").string());
+  Manifest manifest = read_manifest((kit / "manifest.json").string());
+  if (!opt.count_extensions) leave_extensions_uncounted(manifest);
   const Redactor redactor(manifest.solution_lines);
   const std::map<int, std::string> expected = task_file_names(kit);
 

@@ -41,6 +41,7 @@ struct SubmissionOptions {
   std::string work;       // where the build tree goes (default: TMPDIR)
   bool keep_work = false;
   bool renders = true;
+  bool count_extensions = false;  // extension tasks' points (P5T3) count
   double build_seconds = 50;    // one part's compilation and link
   double render_seconds = 60;   // all renders of the report together
   double budget_seconds = 600;  // the whole submission

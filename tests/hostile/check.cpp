@@ -420,13 +420,15 @@ int main(int argc, char** argv) {
   const std::regex not_submitted("not submitted|submission rejected before building");
   double want_score = 0, got_score = 0, max_score = 0;
   size_t not_run = 0, checked = 0;
+  // Extension tests are worth their points only when the grader counts them.
+  const bool count_extensions = std::find(command.begin(), command.end(), "--count-extensions") != command.end();
   for (const auto& [n, tests] : manifest["parts"].items()) {
     const int p = std::stoi(n);
     if (!submission && p != part) continue;
     double part_max = 0;
     for (const auto& m : tests) {
       const std::string name = m.at("test"), task = m.at("task");
-      const double points = m.at("points");
+      const double points = m.value("extension", false) && !count_extensions ? 0.0 : m.at("points").get<double>();
       part_max += points;
       ++checked;
       auto it = listed.find(n + "/" + name);

@@ -120,10 +120,12 @@ int running_threads() {
 }
 
 nlohmann::json describe(const pt::grading::GradedTest& t) {
-  return {{"test", t.full_name()},
-          {"task", t.task},
-          {"points", t.points},
-          {"visibility", t.visibility == pt::grading::Visibility::Visible ? "visible" : "hidden"}};
+  nlohmann::json j = {{"test", t.full_name()},
+                      {"task", t.task},
+                      {"points", t.points},
+                      {"visibility", t.visibility == pt::grading::Visibility::Visible ? "visible" : "hidden"}};
+  if (t.extension) j["extension"] = true;
+  return j;
 }
 
 std::string failure_messages(const testing::TestResult& r) {
@@ -264,6 +266,7 @@ class GradingListener : public testing::EmptyTestEventListener {
       testing::Test::RecordProperty("task", g->task);
       testing::Test::RecordProperty("points", std::to_string(g->points));
       testing::Test::RecordProperty("visibility", g->visibility == pt::grading::Visible ? "visible" : "hidden");
+      if (g->extension) testing::Test::RecordProperty("extension", "true");
       if (g_watchdog) g_watchdog->start(name, g->task);
     }
     report({{"start", name}});
