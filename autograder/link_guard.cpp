@@ -90,6 +90,10 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 const char* const kTestNamespaces[] = {"pt::test::", "pt::grading::", "pt::library::", "pt::error_model::",
                                        "pt::stats::", "testing::"};
 
+// Framework functions that do a task's work for the renderer: the budgeted
+// renderer's allocator is P5T3's answer, so a task file may not call it.
+const char* const kTaskAnswers[][2] = {{"pt::allocate_counts(", "P5T3"}, {"pt::pooled_relative_sd(", "P5T3"}};
+
 // The test-side namespace a demangled name mentions anywhere (its own scope,
 // a template argument, a parameter type), or "".
 std::string test_namespace_in(const std::string& demangled) {
@@ -212,9 +216,13 @@ int main(int argc, char** argv) {
       // What the task file uses must come from the framework or the
       // libraries: the tests' own code (the support's BVH builder, its
       // expected values, GoogleTest's registry) is not the task's to call.
-      for (const auto& s : symbols(object, false, false))
+      for (const auto& s : symbols(object, false, false)) {
         if (test_symbols.count(s.name) && !framework_symbols.count(s.name) && !library_symbols.count(s.name))
           refuse("uses " + demangle(s.name) + ", which only the tests, their support or GoogleTest define");
+        for (const auto& [prefix, task] : kTaskAnswers)
+          if (starts_with(demangle(s.name), prefix))
+            refuse("uses " + demangle(s.name) + ", the framework's own answer to " + task + ": write it yourself");
+      }
     }
     if (problems.empty()) return 0;
     for (const auto& p : problems) std::fprintf(stderr, "pt-link-guard: %s\n", p.c_str());

@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <vector>
 
 #include "core/rng.h"
 #include "geometry/intersection.h"
@@ -68,5 +69,24 @@ class PathTracer {
 // the mean radiance and the sample count.
 PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, int max_samples, int samples_per_batch,
                                 double max_tolerance);
+
+// ---- Part 5 extension (zero points unless your instructor counts it) ----
+
+// One pixel's pilot: the mean and the per-sample variance of its samples'
+// illuminance.
+struct PilotMoments {
+  double mean = 0.0;
+  double variance = 0.0;
+};
+
+// P5T3: how many of `budget` samples each pixel gets (handouts/part5.md,
+// section 10). Counts are whole, sum to exactly max(budget, 0), and follow
+// n_p = max(1, lambda r_p) to within 1, where r_p = sqrt(variance) /
+// sqrt(mean^2 + 1e-2) is the pixel's relative standard deviation (0 for a
+// negative variance or a pilot that is not finite) and lambda spends the
+// budget; with every r_p = 0 the budget is shared equally. A budget smaller
+// than the number of pixels gives one sample each to the pixels with the
+// largest r_p and none to the rest.
+std::vector<int> allocate_samples(const std::vector<PilotMoments>& pilot, long long budget);
 
 }  // namespace pt

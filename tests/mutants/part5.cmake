@@ -112,3 +112,35 @@ pt_mutant(5 rec709_bgr_order ${p5} [[double il = illuminance(x);]]
 #   SampleAdaptively.IlluminanceWeightsFitTheirChannels (hidden).
 pt_mutant(5 rec709_weights_shifted ${p5} [[double il = illuminance(x);]]
           [[double il = 0.7152 * x.r + 0.0722 * x.g + 0.2126 * x.b;]])
+
+# P5T3 (the extension: allocate_samples).
+# The variance instead of its root: n proportional to r^2, the stopping
+# rule's allocation. Caught by AllocateSamples.CountsFollowTheRelativeSd.
+pt_mutant(5 alloc_variance_proportional ${p5} [[std::sqrt(v / (m * m + 1e-2))]] [[v / (m * m + 1e-2)]])
+
+# sigma / mean, as if the mean could not be 0 (the epsilon left out).
+pt_mutant(5 alloc_no_epsilon ${p5} [[std::sqrt(v / (m * m + 1e-2))]] [[std::sqrt(v / (m * m))]])
+
+# sigma / max(mean, 1e-2): another offset than relMSE's.
+pt_mutant(5 alloc_sigma_over_mean ${p5} [[std::sqrt(v / (m * m + 1e-2))]] [[std::sqrt(v) / std::max(m, 1e-2)]])
+
+# NaN and infinite pilots kept. Caught by AllocateSamples.BrokenPilotsGetTheFloor.
+pt_mutant(5 alloc_keeps_nan ${p5} [[std::isfinite(m) && std::isfinite(v) && v > 0]] [[v > 0]])
+
+# No floor: noise-free pixels get no sample.
+# Caught by AllocateSamples.EveryPixelGetsAtLeastOneSample.
+pt_mutant(5 alloc_no_floor ${p5} [[target[i] = std::max(1.0, lambda * r[i]);]] [[target[i] = lambda * r[i];]])
+
+# lambda = budget / sum r: the samples the floors take are spent twice.
+pt_mutant(5 alloc_floors_not_paid ${p5} [[double(budget - (long long)(n - k)) / sum]] [[double(budget) / sum]])
+
+# Each count rounded down and the rest of the budget left unspent.
+pt_mutant(5 alloc_rounds_down ${p5} [[for (size_t k = 0; given < budget; k = (k + 1) % n)]]
+          [[for (size_t k = 0; false; k = (k + 1) % n)]])
+
+# A budget below the pixel count still gives every pixel one sample.
+# Caught by AllocateSamples.ABudgetBelowThePixelCount.
+pt_mutant(5 alloc_overspends_small_budget ${p5} [[if (budget < (long long)n) {]] [[if (false) {]])
+
+# The quietest pixels first.
+pt_mutant(5 alloc_ascending ${p5} [[return r[a] > r[b];]] [[return r[a] < r[b];]])
