@@ -3,7 +3,8 @@
 //
 //   pt-study --out study/                 the full study (8 minutes on a shared 2-core VM)
 //   pt-study --quick --out /tmp/q         every experiment at toy size (the ctest `study` runs this)
-//   pt-study --only adaptive --out study/ one experiment; the page keeps the others
+//   pt-study --only bvh --out study/      one experiment; the page keeps the others
+//   pt-study --only adaptive --out study/ Part 5's two: the stopping rule and the allocation
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -44,7 +45,9 @@ int main(int argc, char** argv) {
   Options opt;
   std::vector<std::string> only;
   app.add_flag("--quick", opt.quick, "every experiment at toy size (under 90 s on 2 cores)");
-  app.add_option("--only", only, "run only these experiments (bvh, direct, roulette, depth, adaptive, allocation, threads)")
+  app.add_option("--only", only,
+                 "run only these experiments (bvh, direct, roulette, depth, adaptive, allocation, threads; "
+                 "adaptive includes allocation: Part 5's two)")
       ->delimiter(',');
   app.add_option("--out", opt.out, "output folder (created; references are cached in it)")->required();
   app.add_option("--threads,-t", opt.threads, "render threads")->check(CLI::Range(1, 64));
@@ -68,6 +71,11 @@ int main(int argc, char** argv) {
       std::cerr << "pt-study: --only: no experiment named \"" << n << "\" (bvh, direct, roulette, depth, adaptive, allocation, threads)\n";
       return 2;
     }
+  // Part 5's question is one: what the stopping rule saves, and how far any
+  // allocation could go (the bound, the budgeted allocator).
+  if (std::find(only.begin(), only.end(), "adaptive") != only.end() &&
+      std::find(only.begin(), only.end(), "allocation") == only.end())
+    only.push_back("allocation");
   if (!have_gnuplot()) {
     std::cerr << "pt-study: gnuplot not found; install Debian's gnuplot-nox (./setup.sh --deps-only)\n";
     return 2;
