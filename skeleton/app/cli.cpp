@@ -144,6 +144,10 @@ int run_cli(int argc, char** argv, const char* student_parts) {
                  "Budgeted adaptive sampling: this many samples per pixel on average, each pixel's share in "
                  "proportion to its relative noise (a pilot pass estimates it); not with -a")
       ->check(within(kMinAdaptiveBudget, kMaxSamples, "the pilot needs two samples"));
+  app.add_option("--adaptive-rounds", s.adaptive_rounds,
+                 "With --adaptive-budget: spend the budget in this many rounds, re-estimating each pixel's noise "
+                 "from its neighbours' samples before each")
+      ->check(within(1, kMaxAdaptiveRounds));
   app.add_flag("-H,--hemisphere", s.direct_hemisphere_sample, "Uniform hemisphere sampling for direct light");
   app.add_option("-o,--accumulate", accumulate, "1: sum all bounces; 0: only bounce number -m")
       ->check(CLI::IsMember({0, 1}));
@@ -170,6 +174,8 @@ int run_cli(int argc, char** argv, const char* student_parts) {
   }
   s.accumulate_bounces = accumulate != 0;
   if (s.adaptive && s.adaptive_budget > 0) return bad_input("--adaptive-budget and -a are two different samplers: choose one");
+  if (app.count("--adaptive-rounds") > 0 && s.adaptive_budget == 0)
+    return bad_input("--adaptive-rounds is for --adaptive-budget");
   // What the options cannot check one by one (the pixel count).
   if (std::string why = check_render_limits(s, threads); !why.empty()) return bad_input(why);
 

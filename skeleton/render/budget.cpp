@@ -76,21 +76,30 @@ std::vector<double> pooled_relative_sd(const std::vector<PixelSums>& pilot, int 
 }
 
 std::vector<int> allocate_counts(const std::vector<double>& r, long long total, int floor, int cap) {
+  return allocate_counts(r, total, std::vector<int>(r.size(), floor), cap);
+}
+
+std::vector<int> allocate_counts(const std::vector<double>& r, long long total, const std::vector<int>& floors,
+                                 int cap) {
   const size_t n = r.size();
-  std::vector<int> counts(n, floor);
+  std::vector<int> counts = floors;
   if (n == 0) return counts;
   auto weight = [&](size_t i) { return std::isfinite(r[i]) && r[i] > 0 ? r[i] : 0.0; };
-  std::vector<double> target(n, double(floor));
+  std::vector<double> target(n);
+  for (size_t i = 0; i < n; ++i) target[i] = double(floors[i]);
   double rsum = 0;
   for (size_t i = 0; i < n; ++i) rsum += weight(i);
   if (rsum == 0) {
-    std::fill(target.begin(), target.end(), double(total) / double(n));
+    // What is left over the floors, shared equally.
+    long long above = total;
+    for (int f : floors) above -= f;
+    for (size_t i = 0; i < n; ++i) target[i] = std::min(double(cap), floors[i] + double(above) / double(n));
   } else {
     // spent(lambda) = sum clamp(lambda r_i, floor, cap) rises with lambda:
     // bisect for spent(lambda) = total (60 halvings reach double precision).
     auto spent = [&](double lambda) {
       double s = 0;
-      for (size_t i = 0; i < n; ++i) s += std::clamp(lambda * weight(i), double(floor), double(cap));
+      for (size_t i = 0; i < n; ++i) s += std::clamp(lambda * weight(i), double(floors[i]), double(cap));
       return s;
     };
     double smallest = rsum;
@@ -102,13 +111,13 @@ std::vector<int> allocate_counts(const std::vector<double>& r, long long total, 
       if (spent(mid) < double(total)) lo = mid;
       else hi = mid;
     }
-    for (size_t i = 0; i < n; ++i) target[i] = std::clamp(hi * weight(i), double(floor), double(cap));
+    for (size_t i = 0; i < n; ++i) target[i] = std::clamp(hi * weight(i), double(floors[i]), double(cap));
   }
   // Round down, then hand out what is left by largest fractional part.
   long long given = 0;
   std::vector<size_t> order(n);
   for (size_t i = 0; i < n; ++i) {
-    counts[i] = std::clamp(int(std::floor(target[i])), floor, cap);
+    counts[i] = std::clamp(int(std::floor(target[i])), floors[i], cap);
     given += counts[i];
     order[i] = i;
   }
@@ -119,7 +128,7 @@ std::vector<int> allocate_counts(const std::vector<double>& r, long long total, 
   for (size_t k = 0; given < total && k < 4 * n; ++k)
     if (counts[order[k % n]] < cap) ++counts[order[k % n]], ++given;
   for (size_t k = n; given > total && k-- > 0;)
-    if (counts[order[k]] > floor) --counts[order[k]], --given;
+    if (counts[order[k]] > floors[order[k]]) --counts[order[k]], --given;
   return counts;
 }
 
@@ -131,10 +140,11 @@ RenderResult render_budgeted(const PathTracer& tracer, int threads, const Progre
   result.sample_counts.assign(pixels, 0);
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  // Progress over both passes: the pilot is the first half of the tiles' count.
+  // Progress over all passes: the pilot, then each round, alike.
+  const int rounds = std::max(1, s.adaptive_rounds);
   auto tiles_done = [&](int offset) {
     return [&, offset](int done, int total) {
-      if (progress) progress(offset * total + done, 2 * total, elapsed());
+      if (progress) progress(offset * total + done, (1 + rounds) * total, elapsed());
     };
   };
 
@@ -148,23 +158,38 @@ RenderResult render_budgeted(const PathTracer& tracer, int threads, const Progre
   for_each_pixel(s.width, s.height, threads, pilot_pixel, tiles_done(0), result);
   if (!result.ok()) return result;
 
-  // The pooled r is indexed like the image (row 0 at the top); so is sums.
-  const std::vector<double> r = pooled_relative_sd(sums, s.width, s.height);
-  result.sample_counts = allocate_counts(r, (long long)s.adaptive_budget * (long long)pixels, pilot, kMaxSamples);
-
-  // The value: the mean of the pilot and the rest (unbiased: budget.h).
-  auto rest_pixel = [&](int x, int y, size_t i) {
-    Rng rng = Rng::for_pixel(s.seed, x, y, kRestPass);
-    PixelSums& p = sums[i];
-    for (int k = pilot; k < result.sample_counts[i]; ++k) add(p, jittered_sample(tracer, x, y, rng));
-    const Spectrum mean = p.sum / double(p.n);
-    const bool finite = p.finite && is_finite(mean);
-    result.image.pixels[i] = finite ? mean : Spectrum(0.0);
-    return finite;
-  };
-  // 4 x 4 tiles: the counts gather in a few places, and 16 x 16 tiles left
-  // one thread with the last heavy tile while the other idled.
-  for_each_pixel(s.width, s.height, threads, rest_pixel, tiles_done(1), result, 4);
+  // Each round spends an equal share of what the pilot left, on counts
+  // re-allocated from r pooled over every sample taken so far (one round: r
+  // from the pilot alone). A round never takes samples back: the counts so
+  // far are its floors. Round j draws from stream pass kRestPass + j.
+  const long long total = (long long)s.adaptive_budget * (long long)pixels;
+  std::vector<int> before(pixels, pilot);
+  for (int round = 0; round < rounds; ++round) {
+    // The pooled r is indexed like the image (row 0 at the top); so is sums.
+    const std::vector<double> r = pooled_relative_sd(sums, s.width, s.height);
+    long long spent = 0;
+    for (int c : before) spent += c;
+    const long long target = spent + (total - spent) / (rounds - round);
+    result.sample_counts = allocate_counts(r, target, before, kMaxSamples);
+    const bool last = round + 1 == rounds;
+    // The value: the mean of all the pixel's samples (budget.h: unbiased with
+    // one round; what more rounds cost is measured there).
+    auto more_pixel = [&](int x, int y, size_t i) {
+      Rng rng = Rng::for_pixel(s.seed, x, y, kRestPass + uint32_t(round));
+      PixelSums& p = sums[i];
+      for (int k = before[i]; k < result.sample_counts[i]; ++k) add(p, jittered_sample(tracer, x, y, rng));
+      if (!last) return true;
+      const Spectrum mean = p.sum / double(p.n);
+      const bool finite = p.finite && is_finite(mean);
+      result.image.pixels[i] = finite ? mean : Spectrum(0.0);
+      return finite;
+    };
+    // 4 x 4 tiles: the counts gather in a few places, and 16 x 16 tiles left
+    // one thread with the last heavy tile while the other idled.
+    for_each_pixel(s.width, s.height, threads, more_pixel, tiles_done(1 + round), result, 4);
+    if (!result.ok()) return result;
+    before = result.sample_counts;
+  }
   result.seconds = elapsed();
   return result;
 }

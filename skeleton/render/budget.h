@@ -14,12 +14,17 @@
 // pilot included, is unbiased given the count. (A count that depended on the
 // pixel's own values, as the stopping rule's does, would weigh lucky and
 // unlucky samples unequally: a pilot that happened to be noisy earns more
-// samples, which dilute it.) This is also why the counts are fixed once from
-// the pilot instead of being re-estimated between rounds: a neighbour's later
-// samples are as many as this pixel's pilot made them, so a re-estimate from
-// them would let the pixel's own values back into its count. The price of
-// leaving the pixel out: a noisy feature is seen only through its
-// neighbours, so its samples spread over the pixels around it.
+// samples, which dilute it.) The price of leaving the pixel out: a noisy
+// feature is seen only through its neighbours, so its samples spread over the
+// pixels around it.
+//
+// Rounds (--adaptive-rounds K > 1) re-estimate r before each round from every
+// sample taken so far, which lowers the pilot's noise. They give up the
+// exact independence above: a neighbour's later samples are as many as this
+// pixel's earlier values made them, so those values reach the pixel's count
+// at second order (through how precisely its neighbours' variances are
+// known, never through their expected value). pt-study's allocation
+// experiment measures both the gain and the bias (handouts/part5.md, section 9).
 #include <vector>
 
 #include "render/renderer.h"
@@ -64,11 +69,17 @@ std::vector<double> pooled_relative_sd(const std::vector<PixelMoments>& pixels, 
 // to the lower index). When every r_p is 0 (or not finite) the total is shared
 // equally. Requires floor * size <= total <= cap * size.
 std::vector<int> allocate_counts(const std::vector<double>& r, long long total, int floor, int cap);
+// The same with a floor per pixel (a round's counts so far): n_p =
+// clamp(lambda r_p, floors_p, cap), what is left over the floors shared
+// equally when every r_p is 0. Requires sum floors <= total <= cap * size.
+std::vector<int> allocate_counts(const std::vector<double>& r, long long total, const std::vector<int>& floors,
+                                 int cap);
 
-// The render: a pilot of pilot_samples(B) per pixel (stream pass 1), counts
-// from allocate_counts over B x pixels with the pilot as the floor, then
-// each pixel's remaining samples (stream pass 2); a pixel's value is the mean
-// of all its samples.
+// The render: a pilot of pilot_samples(B) per pixel (stream pass 1), then K
+// rounds (settings.adaptive_rounds), each spending an equal share of the rest
+// of B x pixels: counts from allocate_counts on r pooled from every sample so
+// far, with the counts so far as floors, and each pixel's new samples (stream
+// pass 2 + round). A pixel's value is the mean of all its samples.
 // Deterministic with the seed on any number of threads.
 RenderResult render_budgeted(const PathTracer& tracer, int threads, const ProgressFn& progress);
 

@@ -29,6 +29,8 @@ std::string check_render_limits(const RenderSettings& s, int threads) {
     return outside("samples per batch", s.samples_per_batch, 1, kMaxSamples);
   if (s.adaptive_budget != 0 && (s.adaptive_budget < kMinAdaptiveBudget || s.adaptive_budget > kMaxSamples))
     return outside("adaptive budget (samples per pixel)", s.adaptive_budget, kMinAdaptiveBudget, kMaxSamples);
+  if (s.adaptive_rounds < 1 || s.adaptive_rounds > kMaxAdaptiveRounds)
+    return outside("adaptive rounds", s.adaptive_rounds, 1, kMaxAdaptiveRounds);
   if (s.adaptive_budget != 0 && s.adaptive)
     return "the adaptive budget and the adaptive stopping rule (-a) are two different samplers: choose one";
   if (threads < 1 || threads > kMaxThreads) return outside("threads", threads, 1, kMaxThreads);

@@ -26,6 +26,7 @@ constexpr int kMaxLightSamples = 1 << 10;
 
 // The budgeted sampler's pilot estimates a variance: two samples at least.
 constexpr int kMinAdaptiveBudget = 2;
+constexpr int kMaxAdaptiveRounds = 16;  // more rounds than this re-estimate from a handful of samples each
 
 // Ray depth. The path estimator recurses once per bounce (the assignment's
 // design), so its depth is bounded by the stack. Measured in the closed box

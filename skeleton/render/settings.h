@@ -18,6 +18,8 @@ struct RenderSettings {
   double max_tolerance = 0.05;          // [-a batch tol]
   int adaptive_budget = 0;              // [--adaptive-budget spp] mean samples per pixel, allocated by
                                         // render/budget.h; 0: off
+  int adaptive_rounds = 4;              // [--adaptive-rounds K] the budget's rounds after the pilot, r
+                                        // re-estimated before each (1: exactly unbiased, budget.h)
   uint64_t seed = 0;                    // render seed; every pixel's stream derives from it
 };
 

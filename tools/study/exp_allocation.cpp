@@ -1,7 +1,8 @@
 // Experiment 5b (Part 5): how far a per-pixel allocation is from the best one
 // can do. On every library scene, at equal samples per pixel: fixed sampling,
 // the course's stopping rule, the budgeted allocator (--adaptive-budget,
-// skeleton/render/budget.h) and the bound E[r^2] / E[r]^2, with r each
+// skeleton/render/budget.h) in its default kRounds rounds (r re-estimated
+// between them) and in one (exactly unbiased), and the bound E[r^2] / E[r]^2, with r each
 // pixel's relative standard deviation of one sample, from the library's
 // stored 8192-spp reference and its per-sample sd image.
 //
@@ -22,6 +23,7 @@ namespace pt::study {
 namespace {
 
 constexpr double kEps = 1e-2;  // relMSE's offset
+constexpr int kRounds = 4;     // the allocator's rounds (RenderSettings' default), against one
 
 // The stored reference box-filtered to the study's resolution (a study pixel
 // is k x k stored pixels; a jittered sample of it is a jittered sample of one
@@ -122,7 +124,9 @@ std::string allocation_gnuplot(const std::vector<std::string>& scenes) {
            "set xlabel \"" + (axis == 5 ? "rays per render" : "wall seconds per render") + "\"\n" +
            "plot \"allocation.csv\" using " + pick("fixed") + ":8:9 with yerrorlines pt 7 lc rgb \"#1f77b4\" title \"fixed\", \\\n" +
            "     \"\" using " + pick("bound") + ":8 with lines dt 2 lc rgb \"#2ca02c\" title \"bound (best allocation)\", \\\n" +
-           "     \"\" using " + pick("budget") + ":8:9 with yerrorbars pt 9 ps 1.5 lc rgb \"#d62728\" title \"budgeted\", \\\n" +
+           "     \"\" using " + pick("budget") + ":8:9 with yerrorbars pt 9 ps 1.5 lc rgb \"#d62728\" title \"budgeted (" +
+           std::to_string(kRounds) + " rounds)\", \\\n" +
+           "     \"\" using " + pick("budget_one_round") + ":8:9 with yerrorbars pt 11 ps 1.2 lc rgb \"#9467bd\" title \"budgeted, one round\", \\\n" +
            "     \"\" using " + pick("course_rule") + ":8:9 with yerrorbars pt 5 lc rgb \"#ff7f0e\" title \"course rule\"\n";
     }
   }
@@ -187,11 +191,21 @@ Experiment run_allocation(const Options& study_opt) {
     }
     RenderSettings br = base;
     br.adaptive_budget = budget;
+    br.adaptive_rounds = kRounds;
     const Measurement bm = measure(opt, s, br, &st.ref);
     const double bs = at_budget.relmse / bm.relmse;
     const double bs_se = ratio_se(bs, at_budget.relmse, at_budget.relmse_se, bm.relmse, bm.relmse_se);
-    row("budget", "--adaptive-budget " + std::to_string(budget), budget, bm);
+    row("budget", "--adaptive-budget " + std::to_string(budget) + " --adaptive-rounds " + std::to_string(kRounds),
+        budget, bm);
     t.set("savings", bs).set("savings_se", bs_se);
+
+    RenderSettings r1 = br;
+    r1.adaptive_rounds = 1;
+    const Measurement rm = measure(opt, s, r1, &st.ref);
+    const double rs = at_budget.relmse / rm.relmse;
+    const double rs_se = ratio_se(rs, at_budget.relmse, at_budget.relmse_se, rm.relmse, rm.relmse_se);
+    row("budget_one_round", "--adaptive-budget " + std::to_string(budget) + " --adaptive-rounds 1", budget, rm);
+    t.set("savings", rs).set("savings_se", rs_se);
 
     RenderSettings cr = base;
     cr.ns_aa = 4 * budget;
@@ -209,22 +223,30 @@ Experiment run_allocation(const Options& study_opt) {
     e.headline.push_back({n + "bound", fmt("%.3f", st.bound)});
     e.headline.push_back({n + "budget_savings", pm(bs, bs_se, "×")});
     e.headline.push_back({n + "budget_share_of_bound", pm(100 * bs / st.bound, 100 * bs_se / st.bound, "%")});
+    e.headline.push_back({n + "budget_one_round_savings", pm(rs, rs_se, "×")});
+    e.headline.push_back({n + "budget_one_round_share_of_bound", pm(100 * rs / st.bound, 100 * rs_se / st.bound, "%")});
     e.headline.push_back({n + "course_rule_savings", pm(cs, cs_se, "×")});
     e.headline.push_back({n + "exact_r_savings", fmt("%.3f", exact_own)});
     e.headline.push_back({n + "exact_pooled_r_savings", fmt("%.3f", exact_pooled)});
     e.headline.push_back({n + "fixed_bias", pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%")});
     e.headline.push_back({n + "budget_bias", pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%")});
+    e.headline.push_back({n + "budget_one_round_bias", pm(100 * rm.energy_bias, 100 * rm.energy_bias_se, "%")});
     e.headline.push_back({n + "course_rule_bias", pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%")});
-    std::fprintf(stderr, "  %s: with exact r %.3f, exact pooled r %.3f\n", entry.name.c_str(), exact_own, exact_pooled);
+    std::fprintf(stderr, "  %s: with exact r %.3f, exact pooled r %.3f; one round %s (%.0f%% of the bound), bias %s\n",
+                 entry.name.c_str(), exact_own, exact_pooled, pm(rs, rs_se, "x").c_str(), 100 * rs / st.bound,
+                 pm(100 * rm.energy_bias, 100 * rm.energy_bias_se, "%").c_str());
     std::fprintf(stderr, "  %s: bound %.3f, budget %s (%.0f%% of the bound), course rule %s at %.1f spp; bias fixed %s, budget %s, rule %s\n",
                  entry.name.c_str(), st.bound, pm(bs, bs_se, "x").c_str(), 100 * bs / st.bound, pm(cs, cs_se, "x").c_str(),
                  cm.samples, pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%").c_str(),
                  pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%").c_str(),
                  pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%").c_str());
-    para += "<li>" + entry.name + ": bound " + fmt("%.3f", st.bound) + "×; the budgeted allocator " + pm(bs, bs_se, "×") +
+    para += "<li>" + entry.name + ": bound " + fmt("%.3f", st.bound) + "×; the budgeted allocator (" +
+            std::to_string(kRounds) + " rounds) " + pm(bs, bs_se, "×") +
             " (" + pm(100 * bs / st.bound, 100 * bs_se / st.bound, "%") + " of the bound; its rule with the true variances would reach " +
             fmt("%.3f", exact_pooled) + "×, and n ∝ the true r with the same floor " + fmt("%.3f", exact_own) + "×), bias " +
-            pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%") + "; the course's rule " + pm(cs, cs_se, "×") +
+            pm(100 * bm.energy_bias, 100 * bm.energy_bias_se, "%") + "; in one round " +
+            pm(rs, rs_se, "×") + ", bias " + pm(100 * rm.energy_bias, 100 * rm.energy_bias_se, "%") +
+            "; the course's rule " + pm(cs, cs_se, "×") +
             " at " + fmt("%.1f", cm.samples) + " spp, bias " + pm(100 * cm.energy_bias, 100 * cm.energy_bias_se, "%") +
             "; fixed sampling's bias " + pm(100 * at_budget.energy_bias, 100 * at_budget.energy_bias_se, "%") + "</li>";
     if (entry.name == "cornell_bunny") {
@@ -242,7 +264,7 @@ Experiment run_allocation(const Options& study_opt) {
   e.html = "<p>relMSE (the stored reference's own share subtracted) against rays and against time, per scene: fixed "
            "sampling at " + std::to_string(fixed_spps[0]) + ", " + std::to_string(budget) + " and " +
            std::to_string(fixed_spps[2]) + " spp, the budgeted allocator (--adaptive-budget " + std::to_string(budget) +
-           "), the course's stopping rule (-a " + std::to_string(batch) + " 0.05, capped at " +
+           " in " + std::to_string(kRounds) + " rounds, and in one), the course's stopping rule (-a " + std::to_string(batch) + " 0.05, capped at " +
            std::to_string(4 * budget) + ") and the bound: the relMSE the best per-pixel allocation of the same samples "
            "would reach, fixed sampling's divided by E[r²]/E[r]² (r from the stored reference's per-sample sd). Savings "
            "are in samples at equal relMSE: fixed sampling's relMSE at the same mean count over the method's (fixed "
