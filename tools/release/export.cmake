@@ -78,6 +78,12 @@ function(write_release_facts)
       string(JSON visibility GET "${manifest}" parts ${part} ${j} visibility)
       if(visibility STREQUAL "hidden")
         string(JSON p GET "${manifest}" parts ${part} ${j} points)
+        # An extension test is worth 0 unless the instructor counts it, and
+        # check-submission shows it as the grader does by default.
+        string(JSON extension ERROR_VARIABLE no_extension GET "${manifest}" parts ${part} ${j} extension)
+        if(NOT no_extension AND extension)
+          set(p 0)
+        endif()
         math(EXPR count "${count} + 1")
         # cmake's math is integer only: points are added in hundredths.
         if(NOT p MATCHES "^([0-9]+)(\\.([0-9]?[0-9]?)0*)?$")
