@@ -28,10 +28,10 @@ inline double relative_sd(const PilotMoments& p) {
 
 // The targets max(1, lambda r) for budget >= pilot.size().
 inline std::vector<double> water_filled_targets(const std::vector<PilotMoments>& pilot, long long budget) {
-  const size_t n = pilot.size();
-  std::vector<double> r(n);
+  std::vector<double> r;
   double rmax = 0;
-  for (size_t i = 0; i < n; ++i) rmax = std::max(rmax, r[i] = relative_sd(pilot[i]));
+  for (const PilotMoments& p : pilot) r.push_back(relative_sd(p)), rmax = std::max(rmax, r.back());
+  const size_t n = r.size();
   if (rmax == 0) return std::vector<double>(n, double(budget) / double(n));
   auto spent = [&](double lambda) {
     double s = 0;
