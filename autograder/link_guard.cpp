@@ -219,9 +219,10 @@ int main(int argc, char** argv) {
       for (const auto& s : symbols(object, false, false)) {
         if (test_symbols.count(s.name) && !framework_symbols.count(s.name) && !library_symbols.count(s.name))
           refuse("uses " + demangle(s.name) + ", which only the tests, their support or GoogleTest define");
+        const std::string name = demangle(s.name);
         for (const auto& [prefix, task] : kTaskAnswers)
-          if (starts_with(demangle(s.name), prefix))
-            refuse("uses " + demangle(s.name) + ", the framework's own answer to " + task + ": write it yourself");
+          if (starts_with(name, prefix))
+            refuse("uses " + name + ", the framework's own answer to " + task + ": write it yourself");
       }
     }
     if (problems.empty()) return 0;

@@ -18,6 +18,7 @@ struct ManifestTest {
   double points = 0;
   bool hidden = false;
   bool extension = false;  // an optional task's test (P5T3): 0 points unless counted
+  bool uncounted() const { return extension && points == 0; }  // an extension left at 0 points
 };
 
 using PartManifest = std::vector<ManifestTest>;

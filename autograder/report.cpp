@@ -99,7 +99,7 @@ void write_results_json(const std::string& path, const Report& report) {
       std::string output = t.passed() ? "" : t.message;
       if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + t.output;
       score += t.passed() ? t.test.points : 0;
-      const std::string uncounted = t.test.extension && t.test.points == 0 ? " (extension, not counted)" : "";
+      const std::string uncounted = t.test.uncounted() ? " (extension, not counted)" : "";
       tests.push_back({{"name", t.test.task + " " + t.test.name + uncounted},
                        {"score", t.passed() ? t.test.points : 0.0},
                        {"max_score", t.test.points},
@@ -150,7 +150,7 @@ void print_report(const Report& report, bool show_hidden) {
       part.add(t);
       all.add(t);
       if (t.test.hidden) hidden.add(t);
-      if (t.test.extension && t.test.points == 0) uncounted.add(t);
+      if (t.test.uncounted()) uncounted.add(t);
     }
     std::string extra =
         hidden.total == 0 ? "" : "including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points";
@@ -183,7 +183,7 @@ void print_report(const Report& report, bool show_hidden) {
       }
       std::printf("  %s %s%s (%s%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
                   points_text(t.test.points).c_str(),
-                  t.test.extension && t.test.points == 0 ? ": an extension task, not counted" : "");
+                  t.test.uncounted() ? ": an extension task, not counted" : "");
       std::fputs(folded(t.message, "      ").c_str(), stdout);
       if (!t.output.empty()) {
         std::printf("      last output:\n");
