@@ -88,13 +88,16 @@ bool place_descriptors(const ChildArgs& a) {
   const int null_fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   const int in = high(null_fd), out = high(a.output), verdicts = high(a.verdicts), key = high(a.key);
   const int status = high(a.status), binary = high(a.binary);
-  bool ok = in >= 0 && out >= 0 && status >= 0 && binary >= 0;
+  const int link_read = high(a.link_read), link_write = high(a.link_write);
+  bool ok = in >= 0 && out >= 0 && status >= 0 && binary >= 0 && (link_read < 0) == (a.link_read < 0) &&
+            (link_write < 0) == (a.link_write < 0);
   ok = ok && ::dup2(in, 0) == 0 && ::dup2(out, 1) == 1 && ::dup2(out, 2) == 2;
   ok = ok && (verdicts < 0 ? (::close(3), true) : ::dup2(verdicts, 3) == 3);
   ok = ok && (key < 0 ? (::close(4), true) : ::dup2(key, 4) == 4);
   ok = ok && ::dup3(status, kStatusFd, O_CLOEXEC) == kStatusFd && ::dup3(binary, kBinaryFd, O_CLOEXEC) == kBinaryFd;
+  ok = ok && (link_read < 0 || ::dup2(link_read, 5) == 5) && (link_write < 0 || ::dup2(link_write, 6) == 6);
   if (!ok) return false;
-  ::close_range(5, kStatusFd - 1, 0);
+  ::close_range(link_read < 0 ? 5 : 7, kStatusFd - 1, 0);
   ::close_range(kBinaryFd + 1, ~0u, 0);
   return true;
 }
@@ -215,6 +218,10 @@ void warden_main(const ChildArgs& a) {
     step(a, "fork", false);
     ::_exit(127);
   }
+  // The warden keeps only its status pipe: the run's other pipes, and those
+  // of a run beside it (a verifier's worker), must end when their writers do.
+  if (a.status > 0) ::close_range(0, static_cast<unsigned>(a.status) - 1, 0);
+  ::close_range(static_cast<unsigned>(a.status) + 1, ~0u, 0);
   int status = 0;
   for (;;) {
     const pid_t pid = ::waitpid(-1, &status, 0);

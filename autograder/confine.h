@@ -42,6 +42,7 @@ struct ChildArgs {
   const Plan* plan = nullptr;
   bool probe = false;  // set everything up and report, but do not exec
   int status = -1, output = -1, verdicts = -1, key = -1, binary = -1;  // inherited descriptors (-1: none)
+  int link_read = -1, link_write = -1;  // a verifier's link to its worker: placed at 5 and 6
   std::string binary_path, workdir;
   std::string output_dir;  // also writable, when not empty (RunRequest::output_dir)
   std::vector<char*> argv, envp;  // null-terminated

@@ -36,7 +36,25 @@ struct Options {
   SandboxOptions sandbox;
   std::string manifest;
   bool count_extensions = false;
+  std::map<int, std::string> workers;  // part -> its worker: the binary graded is that part's verifier
 };
+
+std::string worker_of(const Options& opt, int part) {
+  const auto it = opt.workers.find(part);
+  return it == opt.workers.end() ? "" : it->second;
+}
+
+// "N=FILE" arguments as a map.
+std::map<int, std::string> numbered_files(const std::vector<std::string>& args, const char* option) {
+  std::map<int, std::string> files;
+  for (const auto& b : args) {
+    const auto eq = b.find('=');
+    const int n = eq == std::string::npos ? 0 : std::atoi(b.substr(0, eq).c_str());
+    if (n < 1) throw std::runtime_error(std::string(option) + " expects N=FILE, got " + b);
+    files[n] = b.substr(eq + 1);
+  }
+  return files;
+}
 
 // A trusted binary's own listing (`pt-grade manifest`), or, with no manifest,
 // the listing of the binary under test, which a hostile one can fake.
@@ -130,7 +148,7 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
       continue;
     }
     report.parts[i] = grade_binary(numbers[i], paths[i], tests[i], opt.limits, sandbox, paths[i] + ".grade.log",
-                                   redactor);
+                                   redactor, worker_of(opt, numbers[i]));
     save();  // the run's processes are all dead by now: nothing of it outlives this write
   }
   report.complete = true;
@@ -152,7 +170,7 @@ PartResult grade_one(int part, const std::string& binary, const Options& opt) {
   std::vector<std::string> notes;
   const PartManifest tests = tests_of(part, binary, manifest.get(), sandbox, notes);
   PartResult r = grade_binary(part, binary, tests, opt.limits, sandbox, binary + ".grade.log",
-                              Redactor(manifest ? manifest->solution_lines : std::set<uint64_t>()));
+                              Redactor(manifest ? manifest->solution_lines : std::set<uint64_t>()), worker_of(opt, part));
   r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
   return r;
 }
@@ -262,6 +280,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--parts", parts, "parts to grade")->delimiter(',')->type_name("N,...")->capture_default_str();
   run_cmd->add_option("--binary", binary_args, "grade FILE as part N instead of DIR/tests/partN_tests")
       ->type_name("N=FILE");
+  std::vector<std::string> worker_args;
+  run_cmd->add_option("--worker", worker_args,
+                      "part N's task code runs in FILE, a worker; its binary is then the part's verifier "
+                      "(autograder/boundary/README.md)")
+      ->type_name("N=FILE");
   add_grading(run_cmd);
   run_cmd->add_flag("--count-extensions", opt.count_extensions,
                     "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
@@ -279,11 +302,14 @@ int main(int argc, char** argv) {
   stubs_cmd->add_option("BINARY", binary, "test binary built from the untouched stubs")
       ->required()
       ->check(CLI::ExistingFile);
+  std::string worker;
+  stubs_cmd->add_option("--worker", worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
   add_grading(stubs_cmd);
 
   CLI::App* mutant_cmd = app.add_subcommand("check-mutant", "at least one graded test must fail");
   mutant_cmd->add_option("--part", part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
   mutant_cmd->add_option("BINARY", binary, "test binary built with a mutant")->required()->check(CLI::ExistingFile);
+  mutant_cmd->add_option("--worker", worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
   add_grading(mutant_cmd);
   mutant_cmd->add_flag("--fail-fast", opt.limits.stop_at_first_failure, "stop at the first failing test");
 
@@ -364,6 +390,7 @@ int main(int argc, char** argv) {
   scrub_gtest_environment();
   hide_command_line(argc, argv, "pt-grade");
   try {
+    if (!worker.empty()) opt.workers[part] = worker;
     if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
     if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
     if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
@@ -378,13 +405,8 @@ int main(int argc, char** argv) {
       sub.sandbox = opt.sandbox;
       return grade_submission(sub);
     }
-    std::map<int, std::string> binaries;
-    for (const auto& b : binary_args) {
-      const auto eq = b.find('=');
-      const int n = eq == std::string::npos ? 0 : std::atoi(b.substr(0, eq).c_str());
-      if (n < 1) throw std::runtime_error("--binary expects N=FILE, got " + b);
-      binaries[n] = b.substr(eq + 1);
-    }
+    const std::map<int, std::string> binaries = numbered_files(binary_args, "--binary");
+    opt.workers = numbered_files(worker_args, "--worker");
     return run(build_dir, parts, binaries, opt, json_path, show_hidden);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pt-grade: %s\n", e.what());

@@ -1,5 +1,8 @@
 #include "grade_part.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <deque>
@@ -7,6 +10,10 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <thread>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
 
 #include "verdicts.h"
 
@@ -75,6 +82,52 @@ std::string why_died(const Exit& e, const RunWatch& watch, const GradeLimits& li
                                          " ran out during this test";
 }
 
+RunOutcome not_run(const std::string& why) {
+  RunOutcome r;
+  r.exit.how = Exit::How::NotStarted;
+  r.exit.error = why;
+  return r;
+}
+
+// The worker's run ends with its verifier's (or sooner, by itself).
+class WorkerWatch : public RunObserver {
+ public:
+  void on_channel(std::string_view) override {}
+  Deadline deadline() const override {
+    return {verifier_done ? Clock::now() : Clock::now() + std::chrono::hours(1), 0};
+  }
+  std::atomic<bool> verifier_done{false};
+};
+
+// The verifier's exit status when its worker is gone (boundary/verifier_link.h).
+constexpr int kWorkerLost = 87;
+
+// One run of a verifier with its worker beside it, each in its own sandbox
+// run (its own PID namespace where there are namespaces): the worker can
+// neither see the verifier's memory nor write its verdict channel.
+RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& watch, const std::string& worker,
+                           RunOutcome& worker_run) {
+  int to_worker[2], from_worker[2];
+  if (::pipe2(to_worker, O_CLOEXEC) != 0) return not_run(std::string("pipe: ") + std::strerror(errno));
+  if (::pipe2(from_worker, O_CLOEXEC) != 0) {
+    ::close(to_worker[0]);
+    ::close(to_worker[1]);
+    return not_run(std::string("pipe: ") + std::strerror(errno));
+  }
+  RunRequest w{worker, {}, "", ""};
+  w.link_read = to_worker[0];
+  w.link_write = from_worker[1];
+  request.args.push_back("--pt_worker_fds=5,6");
+  request.link_read = from_worker[0];
+  request.link_write = to_worker[1];
+  WorkerWatch worker_watch;
+  std::thread worker_thread([&] { worker_run = sandbox.run(w, worker_watch); });
+  RunOutcome run = sandbox.run(request, watch);
+  worker_watch.verifier_done = true;
+  worker_thread.join();
+  return run;
+}
+
 }  // namespace
 
 const char* TestResult::status_name() const {
@@ -122,7 +175,8 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
 }
 
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
-                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor) {
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor,
+                        const std::string& worker) {
   PartResult res = pending_part(part, tests, "no verdict");
   res.binary = binary;
   res.log = log_path;
@@ -177,14 +231,20 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no", timeout_flag}, make_key(), ""};
     if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
     RunWatch watch(request.key, limits, part_end, submission_first);
-    const RunOutcome run = sandbox.run(request, watch);
+    RunOutcome worker_run;
+    const RunOutcome run =
+        worker.empty() ? sandbox.run(request, watch) : run_with_worker(sandbox, request, watch, worker, worker_run);
+    const bool worker_lost = !worker.empty() && run.exit.how == Exit::How::Exited && run.exit.code == kWorkerLost;
     ++res.runs;
     output_bytes += run.output_bytes;
     if (log) {
       log << "===== pt-grade: run " << res.runs << ": " << binary;
       for (const auto& a : request.args) log << " " << (a.size() > 200 ? a.substr(0, 200) + "..." : a);
-      log << "\n" << run.output << "\n===== pt-grade: run " << res.runs << " " << run.exit.describe() << "\n"
-          << std::flush;
+      log << "\n" << run.output << "\n===== pt-grade: run " << res.runs << " " << run.exit.describe() << "\n";
+      if (!worker.empty())
+        log << "===== pt-grade: its worker " << worker << "\n"
+            << worker_run.output << "\n===== pt-grade: the worker " << worker_run.exit.describe() << "\n";
+      log << std::flush;
     }
 
     const VerdictStream& s = watch.stream();
@@ -212,9 +272,10 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       TestResult& t = res.tests[it->second];
       const bool hung = run.exit.how == Exit::How::TimedOut;
       t.status = hung ? TestResult::Status::TimedOut : TestResult::Status::Crashed;
-      t.message = run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
-                                                    : why_died(run.exit, watch, limits);
-      t.output = last_lines(run.output);
+      t.message = worker_lost ? "the worker running the task's code " + worker_run.exit.describe() + " during this test"
+                  : run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
+                                                      : why_died(run.exit, watch, limits);
+      t.output = last_lines(worker_lost ? worker_run.output : run.output);
       (hung ? timed_out : crashed) += 1;
       if (hung) hung_tasks.insert(t.test.task);
       ++resolved;

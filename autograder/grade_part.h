@@ -58,7 +58,14 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
 // Grades `binary` as part `part`. The log (when not empty) receives each run's
 // command line and the output kept from it, as it was; the messages and output
 // in the result have the solution's lines removed (redact.h).
+//
+// With a `worker` (boundary/README.md), `binary` is the part's verifier: the
+// tests with proxies of the part's task functions and no student code, and
+// each of its runs has the worker beside it, in a sandbox run of its own,
+// answering the proxies over a pipe each way. The verdicts are the
+// verifier's; a worker that dies takes only the test it was answering.
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
-                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor());
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor(),
+                        const std::string& worker = "");
 
 }  // namespace pt::grade

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -90,12 +91,40 @@ class OutputKeeper {
   uint64_t total_ = 0;
 };
 
-// The warden of the run in progress, for the interrupt handler: a grader
-// stopped with Ctrl-C or SIGTERM takes the run with it.
-volatile sig_atomic_t g_warden = 0;
+// The wardens of the runs in progress (a verifier and its worker run side by
+// side), for the interrupt handler: a grader stopped with Ctrl-C or SIGTERM
+// takes its runs with it.
+constexpr int kWardenSlots = 4;
+volatile sig_atomic_t g_wardens[kWardenSlots] = {};
+std::mutex g_wardens_mutex;
+
+int add_warden(pid_t pid) {
+  std::lock_guard<std::mutex> lock(g_wardens_mutex);
+  for (int i = 0; i < kWardenSlots; ++i)
+    if (g_wardens[i] == 0) {
+      g_wardens[i] = pid;
+      return i;
+    }
+  return -1;
+}
+
+void remove_warden(int slot) {
+  std::lock_guard<std::mutex> lock(g_wardens_mutex);
+  if (slot >= 0) g_wardens[slot] = 0;
+}
+
+// Every live warden but `self`: another run's, never this run's to kill.
+std::set<pid_t> other_wardens(pid_t self) {
+  std::lock_guard<std::mutex> lock(g_wardens_mutex);
+  std::set<pid_t> others;
+  for (int i = 0; i < kWardenSlots; ++i)
+    if (const pid_t w = g_wardens[i]; w != 0 && w != self) others.insert(w);
+  return others;
+}
 
 void kill_run_and_die(int sig) {
-  if (g_warden > 0) ::kill(g_warden, SIGKILL);
+  for (int i = 0; i < kWardenSlots; ++i)
+    if (g_wardens[i] > 0) ::kill(g_wardens[i], SIGKILL);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -145,7 +174,7 @@ void drain(int fd, const std::function<void(const char*, size_t)>& sink) {
 }
 
 SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
-                  bool probe) {
+                  bool probe, Fd& link_read, Fd& link_write) {
   SpawnResult r;
   Pipe status, output, verdicts, key;
   if (!status.open() || !output.open() || (!req.key.empty() && (!verdicts.open() || !key.open()))) {
@@ -172,6 +201,13 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   a.output = output.write.fd;
   a.verdicts = verdicts.write.fd;
   a.key = key.read.fd;
+  if (req.key.empty()) {  // a worker: its link where a verdict channel would be
+    a.verdicts = req.link_write;
+    a.key = req.link_read;
+  } else {
+    a.link_read = req.link_read;
+    a.link_write = req.link_write;
+  }
   a.binary = binary.fd;
   a.binary_path = req.binary;
   a.workdir = workdir;
@@ -198,12 +234,14 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
     return r;
   }
   if (warden == 0) confine::warden_main(a);
-  g_warden = warden;
+  const int slot = add_warden(warden);
   status.write.reset();
   output.write.reset();
   verdicts.write.reset();
   key.read.reset();
   binary.reset();
+  link_read.reset();  // the child has its own: the peer sees the end of the link when this run ends
+  link_write.reset();
 
   const SandboxLimits& limits = plan.limits;
   OutputKeeper kept(limits.output_head, limits.output_tail);
@@ -237,9 +275,13 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   int warden_status = 0;
   while (::waitpid(warden, &warden_status, 0) < 0 && errno == EINTR) {
   }
-  g_warden = 0;
   // Without a PID namespace, whatever the killed warden left is handed here.
-  if (!plan.pid_ns) confine::kill_descendants(before);
+  if (!plan.pid_ns) {
+    std::set<pid_t> spare = other_wardens(warden);
+    spare.insert(before.begin(), before.end());
+    confine::kill_descendants(spare);
+  }
+  remove_warden(slot);
   drain(output.read.fd, keep_output);
   if (!verdicts_eof) drain(verdicts.read.fd, to_observer);
   drain(status.read.fd, to_status);
@@ -401,7 +443,8 @@ void Sandbox::probe() {
     const std::string workdir = scratch_ + "/probe-" + std::to_string(attempt);
     ::mkdir(workdir.c_str(), 0700);
     FixedDeadline observer(10);
-    const SpawnResult r = spawn(p, workdir, request, observer, /*probe=*/true);
+    Fd no_link_read, no_link_write;
+    const SpawnResult r = spawn(p, workdir, request, observer, /*probe=*/true, no_link_read, no_link_write);
     std::error_code ec;
     fs::remove_all(workdir, ec);
     bool retry = false;
@@ -492,6 +535,7 @@ std::vector<std::string> Sandbox::layer_ids() const {
 }
 
 RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
+  Fd link_read(request.link_read), link_write(request.link_write);  // the run's, whatever happens
   const std::string workdir = scratch_ + "/run-" + std::to_string(++runs_);
   if (::mkdir(workdir.c_str(), 0700) != 0) {
     RunOutcome r;
@@ -513,7 +557,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
       return r;
     }
   }
-  SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false);
+  SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write);
   std::error_code ec;
   fs::remove_all(workdir, ec);
   return std::move(r.outcome);

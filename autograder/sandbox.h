@@ -17,6 +17,7 @@
 // named in layers_missing(), never silently assumed. Linux only.
 #include <sys/types.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -61,6 +62,12 @@ struct RunRequest {
   // Handed to the sandbox user when the grader is root, never through a link:
   // its path must hold none (a fresh folder of the grader's: work_area.h).
   std::string output_dir;
+  // When not -1, the grader's ends of a link between a verifier and its worker
+  // (boundary/README.md): the run reads link_read and writes link_write, as
+  // descriptors 5 and 6 beside a verdict channel (a verifier), or as 4 and 3
+  // without one (a worker). run() takes them: it closes them once the child
+  // has its own, so that each end sees the other's death as the end of file.
+  int link_read = -1, link_write = -1;
 };
 
 struct Deadline {
@@ -107,7 +114,7 @@ class Sandbox {
   std::string scratch_;  // the grader's own temporary folder
   Plan* plan_;
   std::vector<std::string> active_, missing_;
-  int runs_ = 0;
+  std::atomic<int> runs_{0};  // a verifier and its worker run side by side
 };
 
 }  // namespace pt::grade

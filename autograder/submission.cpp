@@ -249,7 +249,7 @@ int build_and_grade(Graded& graded) {
     parts_list += (parts_list.empty() ? "" : ";") + std::to_string(f->part);
   }
 
-  std::map<int, std::string> binaries;
+  std::map<int, std::string> binaries, workers;
   const bool landlock = opt.sandbox.confine && std::find(opt.sandbox.without.begin(), opt.sandbox.without.end(),
                                                          "landlock") == opt.sandbox.without.end();
   KitBuild kit_build(tree.string(), landlock);
@@ -285,7 +285,12 @@ int build_and_grade(Graded& graded) {
       set_part(f->part, "not built: the submission's time budget ran out");
       continue;
     }
-    const std::string target = "part" + std::to_string(f->part) + "_tests";
+    // A part across the process boundary (boundary/README.md): the build makes
+    // only its worker; the verifier is the kit's, outside the tree.
+    const fs::path verifier = kit / "verifiers" / ("part" + std::to_string(f->part) + "_verify");
+    const bool across = fs::is_regular_file(verifier) &&
+                        fs::is_regular_file(tree / "lib" / ("libpt_boundary_worker_part" + std::to_string(f->part) + ".a"));
+    const std::string target = "part" + std::to_string(f->part) + (across ? "_worker" : "_tests");
     std::string out;
     const auto build_start = Clock::now();
     build_stopped = false;
@@ -314,7 +319,12 @@ int build_and_grade(Graded& graded) {
       continue;
     }
     report.notes.push_back("part " + std::to_string(f->part) + ": built in " + seconds_text(std::round(took * 10) / 10));
-    binaries[f->part] = (tree / "build" / target).string();
+    if (across) {
+      binaries[f->part] = verifier.string();
+      workers[f->part] = (tree / "build" / target).string();
+    } else {
+      binaries[f->part] = (tree / "build" / target).string();
+    }
   }
   save();
 
@@ -330,8 +340,11 @@ int build_and_grade(Graded& graded) {
     GradeLimits limits = opt.limits;
     limits.deadline = deadline;
     for (const auto& [part, binary] : binaries) {
-      report.parts[part_index(part)] =
-          grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, binary + ".grade.log", redactor);
+      const auto worker = workers.find(part);
+      // The log beside what was built from the submission (a verifier is the kit's, shared).
+      const std::string log = (worker != workers.end() ? worker->second : binary) + ".grade.log";
+      report.parts[part_index(part)] = grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, log, redactor,
+                                                    worker != workers.end() ? worker->second : "");
       save();  // every process of that run is dead by now
     }
     // 6. The renders of the report.

@@ -211,10 +211,27 @@ elseif(MODE STREQUAL "kit")
   foreach(tool pt-grade pt-link-guard pt-library-check)  # the grader's tools need no debug information either
     strip_debug(bin/${tool})
   endforeach()
+  # The verifiers of the boundary's parts (autograder/boundary/README.md):
+  # outside lib/ and src/, which a submission's tree copies and its build reads.
+  if(DEFINED VERIFIERS AND VERIFIERS)
+    string(REPLACE "," ";" verifiers "${VERIFIERS}")
+    foreach(v IN LISTS verifiers)
+      get_filename_component(name ${v} NAME)
+      copy_file(${v} verifiers/${name})
+      strip_debug(verifiers/${name})
+    endforeach()
+  endif()
   copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
   file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
   foreach(lib IN LISTS libs)
     get_filename_component(name ${lib} NAME)
+    # A boundary part's tests are only in its verifier: its tests' archive,
+    # hidden tests included, has no place in a tree that hostile code builds in.
+    if(name MATCHES "^libpt_tests_part([0-9]+)\\.a$")
+      if(EXISTS ${BINARY_DIR}/grader-kit-lib/libpt_boundary_worker_part${CMAKE_MATCH_1}.a)
+        continue()
+      endif()
+    endif()
     copy_file(${lib} lib/${name})
     # Without debug information the kit is a tenth of the size: a submission's
     # copy of it and its links are that much faster.

@@ -1,0 +1,132 @@
+#include "verifier_link.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/prctl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+extern char** environ;
+
+namespace pt::boundary {
+namespace {
+
+thread_local const PathTracer* g_tracer = nullptr;
+thread_local const std::function<Spectrum()>* g_next_sample = nullptr;
+
+std::vector<std::string> own_arguments() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> args;
+  for (size_t at = 0; at < all.size();) {
+    const size_t end = all.find('\0', at);
+    args.push_back(all.substr(at, end == std::string::npos ? std::string::npos : end - at));
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return args;
+}
+
+[[noreturn]] void worker_lost(const std::string& why) {
+  std::fflush(stdout);
+  std::fprintf(stderr, "\n[  WORKER  ] the process running the task's code is gone (%s); this test has no verdict\n",
+               why.c_str());
+  std::fflush(stderr);
+  std::_Exit(kWorkerLost);
+}
+
+// Starts the worker with the requests on its descriptor 4 and its answers on 3.
+void start_worker(const std::string& path, int& in, int& out) {
+  int requests[2], answers[2];
+  if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0) worker_lost("pipe failed");
+  // Above 4 first, so that placing one end at 3 or 4 never overwrites another.
+  for (int* fd : {&requests[0], &requests[1], &answers[0], &answers[1]}) {
+    const int high = ::fcntl(*fd, F_DUPFD_CLOEXEC, 10);
+    ::close(*fd);
+    *fd = high;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, answers[1], 3);
+  posix_spawn_file_actions_adddup2(&actions, requests[0], 4);
+  posix_spawn_file_actions_addclosefrom_np(&actions, 5);
+  char* argv[] = {const_cast<char*>(path.c_str()), nullptr};
+  pid_t pid = 0;
+  const int err = ::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) worker_lost("could not start " + path + ": " + std::strerror(err));
+  ::close(answers[1]);
+  ::close(requests[0]);
+  in = answers[0];
+  out = requests[1];
+}
+
+void serve_callbacks(Link& link) {
+  link.on(Call::EstRadiance, [](Reader& args, Writer& result) {
+    if (!g_tracer) throw std::runtime_error("est_radiance_global_illumination called outside a pixel's sampling");
+    const auto ray = args.get<Ray>();
+    auto rng = args.get<Rng>();
+    result.put(g_tracer->est_radiance_global_illumination(ray, rng)).put(rng);
+  });
+  link.on(Call::NextSample, [](Reader&, Writer& result) {
+    if (!g_next_sample) throw std::runtime_error("next_sample called outside sample_adaptively");
+    result.put((*g_next_sample)());
+  });
+}
+
+Link* make_link() {
+  // Nothing of this process may be read through /proc by a process of the
+  // same user (the worker, when no PID namespace keeps it from seeing this one).
+  ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+  int in = -1, out = -1;
+  for (const std::string& a : own_arguments()) {
+    char extra;
+    if (std::sscanf(a.c_str(), "--pt_worker_fds=%d,%d%c", &in, &out, &extra) == 2) break;
+    if (a.rfind("--pt_worker=", 0) == 0) {
+      start_worker(a.substr(12), in, out);
+      break;
+    }
+  }
+  if (in < 0 || out < 0) return nullptr;
+  auto* link = new Link(in, out);
+  serve_callbacks(*link);
+  return link;
+}
+
+std::recursive_mutex& link_mutex() {
+  static std::recursive_mutex m;
+  return m;
+}
+
+}  // namespace
+
+std::string call_worker(Call call, const Writer& args) {
+  std::lock_guard<std::recursive_mutex> lock(link_mutex());
+  static Link* const link = make_link();
+  if (!link)
+    throw std::runtime_error(
+        "this test binary runs the task's code in a worker process and was given none: run it with "
+        "--pt_worker=PATH (e.g. part1_worker), or through pt-grade");
+  try {
+    return link->call(call, args);
+  } catch (const LinkBroken& e) {
+    worker_lost(e.what());
+  }
+}
+
+TracerScope::TracerScope(const PathTracer* tracer) : previous_(g_tracer) { g_tracer = tracer; }
+TracerScope::~TracerScope() { g_tracer = previous_; }
+
+SampleSourceScope::SampleSourceScope(const std::function<Spectrum()>* next_sample) : previous_(g_next_sample) {
+  g_next_sample = next_sample;
+}
+SampleSourceScope::~SampleSourceScope() { g_next_sample = previous_; }
+
+}  // namespace pt::boundary

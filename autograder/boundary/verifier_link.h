@@ -1,0 +1,53 @@
+#pragma once
+// The verifier's end of the boundary (README.md beside this file): the graded
+// tests call the proxies of one part's task functions, and each proxy asks the
+// worker, where the student's code runs, over the link made here.
+//
+// The link comes from the command line, on first use:
+//   --pt_worker_fds=IN,OUT  the worker is already running (pt-grade started it
+//                           in the sandbox, on pipes at these descriptors)
+//   --pt_worker=PATH        start PATH here (a student's or ctest's run)
+// Without either, every proxy fails its test saying so.
+#include <string>
+
+#include "render/pathtracer.h"
+#include "wire.h"
+
+namespace pt::boundary {
+
+// The verifier's exit status when the worker died or broke the link: the test
+// that was running gets no verdict, and pt-grade charges it with the worker's
+// end and starts both again on the tests left.
+constexpr int kWorkerLost = 87;
+
+// Calls the worker (one call at a time, from any thread). A broken link ends
+// this process with kWorkerLost after saying why on stderr.
+std::string call_worker(Call call, const Writer& args);
+
+// While one lives, the worker's calls back to EstRadiance go to `tracer`
+// (its own est_radiance_global_illumination: a test's scripted one, or the
+// solution's).
+class TracerScope {
+ public:
+  explicit TracerScope(const PathTracer* tracer);
+  ~TracerScope();
+  TracerScope(const TracerScope&) = delete;
+  TracerScope& operator=(const TracerScope&) = delete;
+
+ private:
+  const PathTracer* previous_;
+};
+
+// The same for Part 5's next_sample.
+class SampleSourceScope {
+ public:
+  explicit SampleSourceScope(const std::function<Spectrum()>* next_sample);
+  ~SampleSourceScope();
+  SampleSourceScope(const SampleSourceScope&) = delete;
+  SampleSourceScope& operator=(const SampleSourceScope&) = delete;
+
+ private:
+  const std::function<Spectrum()>* previous_;
+};
+
+}  // namespace pt::boundary

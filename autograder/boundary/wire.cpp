@@ -1,0 +1,143 @@
+#include "wire.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+
+#include "core/not_implemented.h"
+
+namespace pt::boundary {
+namespace {
+
+constexpr size_t kHeader = 7;  // u32 length, u8 kind, u16 call
+const std::string kNotImplementedPrefix = "not implemented: ";
+
+}  // namespace
+
+std::string Reader::get_string(size_t max) {
+  const uint32_t n = get<uint32_t>();
+  if (n > max) throw LinkBroken("a string longer than " + std::to_string(max) + " bytes");
+  need(n);
+  std::string s = bytes_.substr(at_, n);
+  at_ += n;
+  return s;
+}
+
+void Reader::need(size_t n) const {
+  if (n > bytes_.size() - at_) throw LinkBroken("a message shorter than its call's values");
+}
+
+void Reader::finish() const {
+  if (at_ != bytes_.size()) throw LinkBroken("a message longer than its call's values");
+}
+
+void Link::on(Call call, Handler handler) {
+  const size_t i = static_cast<size_t>(call);
+  if (handlers_.size() <= i) handlers_.resize(i + 1);
+  handlers_[i] = std::move(handler);
+}
+
+bool Link::fill(size_t n) {
+  if (start_ > 0 && start_ == buffer_.size()) {
+    buffer_.clear();
+    start_ = 0;
+  }
+  while (buffer_.size() - start_ < n) {
+    char chunk[1 << 16];
+    const ssize_t got = ::read(in_, chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw LinkBroken(std::string("reading the link: ") + std::strerror(errno));
+    if (got == 0) return false;
+    buffer_.append(chunk, static_cast<size_t>(got));
+  }
+  return true;
+}
+
+bool Link::receive(Message& m) {
+  if (!fill(kHeader)) {
+    if (buffer_.size() == start_) return false;  // ended between messages
+    throw LinkBroken("the other side closed the link in the middle of a message");
+  }
+  uint32_t length;
+  std::memcpy(&length, buffer_.data() + start_, 4);
+  const uint8_t kind = static_cast<uint8_t>(buffer_[start_ + 4]);
+  std::memcpy(&m.call, buffer_.data() + start_ + 5, 2);
+  if (length > kMaxPayload) throw LinkBroken("a message of " + std::to_string(length) + " bytes");
+  if (kind < 1 || kind > 3) throw LinkBroken("a message of unknown kind " + std::to_string(kind));
+  m.kind = static_cast<Kind>(kind);
+  if (!fill(kHeader + length)) throw LinkBroken("the other side closed the link in the middle of a message");
+  m.payload.assign(buffer_, start_ + kHeader, length);
+  start_ += kHeader + length;
+  return true;
+}
+
+void Link::send(Kind kind, uint16_t call, const std::string& payload) {
+  std::string bytes(kHeader, '\0');
+  const uint32_t length = static_cast<uint32_t>(payload.size());
+  std::memcpy(bytes.data(), &length, 4);
+  bytes[4] = static_cast<char>(kind);
+  std::memcpy(bytes.data() + 5, &call, 2);
+  bytes += payload;
+  for (size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(out_, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw LinkBroken(std::string("writing the link: ") + std::strerror(errno));
+    done += static_cast<size_t>(n);
+  }
+}
+
+void Link::handle(const Message& m) {
+  Writer result;
+  Kind kind = Kind::Return;
+  Writer thrown;
+  try {
+    if (m.call >= handlers_.size() || !handlers_[m.call])
+      throw std::runtime_error("the other side asked for call " + std::to_string(m.call) + ", which this side does not serve");
+    Reader args(m.payload);
+    handlers_[m.call](args, result);
+    args.finish();
+  } catch (const LinkBroken&) {
+    throw;
+  } catch (const NotImplemented& e) {
+    kind = Kind::Throw;
+    thrown.put(Thrown::NotImplemented).put_string(e.what());
+  } catch (const std::exception& e) {
+    kind = Kind::Throw;
+    thrown.put(Thrown::Error).put_string(e.what());
+  } catch (...) {
+    kind = Kind::Throw;
+    thrown.put(Thrown::Error).put_string("an exception that is not a std::exception");
+  }
+  send(kind, m.call, kind == Kind::Return ? result.bytes() : thrown.bytes());
+}
+
+std::string Link::call(Call call, const Writer& args) {
+  send(Kind::Request, static_cast<uint16_t>(call), args.bytes());
+  for (Message m;;) {
+    if (!receive(m)) throw LinkBroken("the other side closed the link before answering");
+    if (m.kind == Kind::Request) {
+      handle(m);
+      continue;
+    }
+    if (m.call != static_cast<uint16_t>(call)) throw LinkBroken("an answer to a call that was not made");
+    if (m.kind == Kind::Return) return std::move(m.payload);
+    Reader r(m.payload);
+    const auto what = r.get<Thrown>();
+    std::string text = r.get_string();
+    r.finish();
+    if (what == Thrown::NotImplemented) {
+      if (text.rfind(kNotImplementedPrefix, 0) == 0) text.erase(0, kNotImplementedPrefix.size());
+      throw NotImplemented(text);
+    }
+    throw std::runtime_error(text);
+  }
+}
+
+void Link::serve() {
+  for (Message m; receive(m);) {
+    if (m.kind != Kind::Request) throw LinkBroken("an answer to a call that was not made");
+    handle(m);
+  }
+}
+
+}  // namespace pt::boundary
