@@ -1,6 +1,10 @@
 #include "grade_part.h"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,8 +14,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <thread>
-#include <atomic>
 #include <cerrno>
 #include <cstring>
 
@@ -89,42 +91,113 @@ RunOutcome not_run(const std::string& why) {
   return r;
 }
 
-// The worker's run ends with its verifier's (or sooner, by itself).
+// The verifier's exit status when its worker is gone, and when it never
+// reached its main (boundary/verifier_link.h).
+constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88;
+
+// The worker's run ends when its verifier's has (or sooner, by itself): the
+// grader closes the write end of `verifier_done`.
 class WorkerWatch : public RunObserver {
  public:
+  explicit WorkerWatch(int verifier_done) : verifier_done_(verifier_done) {}
   void on_channel(std::string_view) override {}
   Deadline deadline() const override {
-    return {verifier_done ? Clock::now() : Clock::now() + std::chrono::hours(1), 0};
+    pollfd p{verifier_done_, POLLIN, 0};
+    const bool over = ::poll(&p, 1, 0) > 0;
+    return {over ? Clock::now() : Clock::now() + std::chrono::hours(1), 0};
   }
-  std::atomic<bool> verifier_done{false};
+
+ private:
+  int verifier_done_;
 };
 
-// The verifier's exit status when its worker is gone (boundary/verifier_link.h).
-constexpr int kWorkerLost = 87;
+// A worker's RunOutcome, from the helper process that ran it.
+void write_outcome(int fd, const RunOutcome& r) {
+  std::ostringstream out;
+  auto text = [&out](const std::string& s) { out << s.size() << ' ' << s; };
+  out << static_cast<int>(r.exit.how) << ' ' << r.exit.code << ' ' << r.exit.seconds << ' ' << r.exit.limit << ' '
+      << r.output_bytes << ' ';
+  text(r.exit.error);
+  text(r.output);
+  const std::string bytes = out.str();
+  for (size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n <= 0 && errno != EINTR) return;
+    if (n > 0) done += static_cast<size_t>(n);
+  }
+}
+
+RunOutcome read_outcome(int fd) {
+  std::string bytes;
+  char chunk[1 << 16];
+  for (ssize_t n; (n = ::read(fd, chunk, sizeof chunk)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    bytes.append(chunk, static_cast<size_t>(n));
+  }
+  RunOutcome r;
+  std::istringstream in(bytes);
+  auto text = [&in](std::string& s) {
+    size_t n = 0;
+    if (!(in >> n) || in.get() != ' ' || n > (64u << 20)) return false;
+    s.resize(n);
+    return static_cast<bool>(in.read(s.data(), static_cast<std::streamsize>(n)));
+  };
+  int how = 0;
+  if (!(in >> how >> r.exit.code >> r.exit.seconds >> r.exit.limit >> r.output_bytes) || in.get() != ' ' ||
+      !text(r.exit.error) || !text(r.output)) {
+    r = RunOutcome();
+    r.exit.how = Exit::How::Lost;
+    r.exit.error = "the grader's helper that ran the worker ended without saying how the worker ended";
+    return r;
+  }
+  r.exit.how = static_cast<Exit::How>(how);
+  return r;
+}
 
 // One run of a verifier with its worker beside it, each in its own sandbox
 // run (its own PID namespace where there are namespaces): the worker can
-// neither see the verifier's memory nor write its verdict channel.
+// neither see the verifier's memory nor write its verdict channel. The
+// worker's run is driven by a helper process, not a thread: the sandbox
+// clones its processes with a raw clone(), which in a process with a second
+// thread could copy a lock that thread holds (malloc's) and hang the copy.
 RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& watch, const std::string& worker,
                            RunOutcome& worker_run) {
-  int to_worker[2], from_worker[2];
-  if (::pipe2(to_worker, O_CLOEXEC) != 0) return not_run(std::string("pipe: ") + std::strerror(errno));
-  if (::pipe2(from_worker, O_CLOEXEC) != 0) {
-    ::close(to_worker[0]);
-    ::close(to_worker[1]);
-    return not_run(std::string("pipe: ") + std::strerror(errno));
+  int to_worker[2], from_worker[2], done[2], outcome[2];
+  int* pipes[] = {to_worker, from_worker, done, outcome};
+  for (int i = 0; i < 4; ++i)
+    if (::pipe2(pipes[i], O_CLOEXEC) != 0) {
+      const std::string why = std::string("pipe: ") + std::strerror(errno);
+      for (int j = 0; j < i; ++j) ::close(pipes[j][0]), ::close(pipes[j][1]);
+      return not_run(why);
+    }
+  std::fflush(nullptr);
+  const pid_t helper = ::fork();
+  if (helper == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    for (int fd : {to_worker[1], from_worker[0], done[1], outcome[0]}) ::close(fd);
+    RunRequest w{worker, {}, "", ""};
+    w.link_read = to_worker[0];
+    w.link_write = from_worker[1];
+    WorkerWatch worker_watch(done[0]);
+    write_outcome(outcome[1], sandbox.run(w, worker_watch));
+    ::_exit(0);
   }
-  RunRequest w{worker, {}, "", ""};
-  w.link_read = to_worker[0];
-  w.link_write = from_worker[1];
+  for (int fd : {to_worker[0], from_worker[1], done[0], outcome[1]}) ::close(fd);
+  if (helper < 0) {
+    const std::string why = std::string("fork: ") + std::strerror(errno);
+    for (int fd : {to_worker[1], from_worker[0], done[1], outcome[0]}) ::close(fd);
+    return not_run(why);
+  }
   request.args.push_back("--pt_worker_fds=5,6");
   request.link_read = from_worker[0];
   request.link_write = to_worker[1];
-  WorkerWatch worker_watch;
-  std::thread worker_thread([&] { worker_run = sandbox.run(w, worker_watch); });
   RunOutcome run = sandbox.run(request, watch);
-  worker_watch.verifier_done = true;
-  worker_thread.join();
+  ::close(done[1]);
+  worker_run = read_outcome(outcome[0]);
+  ::close(outcome[0]);
+  while (::waitpid(helper, nullptr, 0) < 0 && errno == EINTR) {
+  }
   return run;
 }
 
@@ -234,7 +307,9 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     RunOutcome worker_run;
     const RunOutcome run =
         worker.empty() ? sandbox.run(request, watch) : run_with_worker(sandbox, request, watch, worker, worker_run);
-    const bool worker_lost = !worker.empty() && run.exit.how == Exit::How::Exited && run.exit.code == kWorkerLost;
+    const bool worker_exit = !worker.empty() && run.exit.how == Exit::How::Exited;
+    const bool worker_lost = worker_exit && run.exit.code == kWorkerLost;
+    const bool worker_never_started = worker_exit && run.exit.code == kWorkerNeverStarted;
     ++res.runs;
     output_bytes += run.output_bytes;
     if (log) {
@@ -267,6 +342,17 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
       t.seconds = v.seconds;
       ++resolved;
+    }
+    if (worker_never_started) {
+      const std::string why = "the worker running the task's code " + worker_run.exit.describe() +
+                              " before its main started";
+      for (TestResult* t : unresolved()) {
+        t->status = TestResult::Status::NoVerdict;
+        t->message = "no verdict: " + why;
+        t->output = last_lines(worker_run.output);
+      }
+      res.notes.push_back(why + " (a static initializer?): every test of the part is charged with it");
+      break;
     }
     if (auto it = index.find(s.running()); it != index.end() && res.tests[it->second].status == TestResult::Status::NotRun) {
       TestResult& t = res.tests[it->second];

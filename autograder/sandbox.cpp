@@ -18,7 +18,6 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -91,40 +90,12 @@ class OutputKeeper {
   uint64_t total_ = 0;
 };
 
-// The wardens of the runs in progress (a verifier and its worker run side by
-// side), for the interrupt handler: a grader stopped with Ctrl-C or SIGTERM
-// takes its runs with it.
-constexpr int kWardenSlots = 4;
-volatile sig_atomic_t g_wardens[kWardenSlots] = {};
-std::mutex g_wardens_mutex;
-
-int add_warden(pid_t pid) {
-  std::lock_guard<std::mutex> lock(g_wardens_mutex);
-  for (int i = 0; i < kWardenSlots; ++i)
-    if (g_wardens[i] == 0) {
-      g_wardens[i] = pid;
-      return i;
-    }
-  return -1;
-}
-
-void remove_warden(int slot) {
-  std::lock_guard<std::mutex> lock(g_wardens_mutex);
-  if (slot >= 0) g_wardens[slot] = 0;
-}
-
-// Every live warden but `self`: another run's, never this run's to kill.
-std::set<pid_t> other_wardens(pid_t self) {
-  std::lock_guard<std::mutex> lock(g_wardens_mutex);
-  std::set<pid_t> others;
-  for (int i = 0; i < kWardenSlots; ++i)
-    if (const pid_t w = g_wardens[i]; w != 0 && w != self) others.insert(w);
-  return others;
-}
+// The warden of the run in progress, for the interrupt handler: a grader
+// stopped with Ctrl-C or SIGTERM takes the run with it.
+volatile sig_atomic_t g_warden = 0;
 
 void kill_run_and_die(int sig) {
-  for (int i = 0; i < kWardenSlots; ++i)
-    if (g_wardens[i] > 0) ::kill(g_wardens[i], SIGKILL);
+  if (g_warden > 0) ::kill(g_warden, SIGKILL);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -234,7 +205,7 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
     return r;
   }
   if (warden == 0) confine::warden_main(a);
-  const int slot = add_warden(warden);
+  g_warden = warden;
   status.write.reset();
   output.write.reset();
   verdicts.write.reset();
@@ -275,13 +246,9 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   int warden_status = 0;
   while (::waitpid(warden, &warden_status, 0) < 0 && errno == EINTR) {
   }
+  g_warden = 0;
   // Without a PID namespace, whatever the killed warden left is handed here.
-  if (!plan.pid_ns) {
-    std::set<pid_t> spare = other_wardens(warden);
-    spare.insert(before.begin(), before.end());
-    confine::kill_descendants(spare);
-  }
-  remove_warden(slot);
+  if (!plan.pid_ns) confine::kill_descendants(before);
   drain(output.read.fd, keep_output);
   if (!verdicts_eof) drain(verdicts.read.fd, to_observer);
   drain(status.read.fd, to_status);
@@ -536,7 +503,9 @@ std::vector<std::string> Sandbox::layer_ids() const {
 
 RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   Fd link_read(request.link_read), link_write(request.link_write);  // the run's, whatever happens
-  const std::string workdir = scratch_ + "/run-" + std::to_string(++runs_);
+  // The process id too: a verifier's worker is run by a helper process with
+  // a copy of this Sandbox (grade_part.cpp).
+  const std::string workdir = scratch_ + "/run-" + std::to_string(::getpid()) + "-" + std::to_string(++runs_);
   if (::mkdir(workdir.c_str(), 0700) != 0) {
     RunOutcome r;
     r.exit = not_started("cannot create " + workdir + ": " + std::strerror(errno));

@@ -17,7 +17,6 @@
 // named in layers_missing(), never silently assumed. Linux only.
 #include <sys/types.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -114,7 +113,7 @@ class Sandbox {
   std::string scratch_;  // the grader's own temporary folder
   Plan* plan_;
   std::vector<std::string> active_, missing_;
-  std::atomic<int> runs_{0};  // a verifier and its worker run side by side
+  int runs_ = 0;
 };
 
 }  // namespace pt::grade

@@ -1,6 +1,7 @@
 #include "verifier_link.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/prctl.h>
 #include <unistd.h>
@@ -34,12 +35,12 @@ std::vector<std::string> own_arguments() {
   return args;
 }
 
-[[noreturn]] void worker_lost(const std::string& why) {
+[[noreturn]] void worker_lost(const std::string& why, int status = kWorkerLost) {
   std::fflush(stdout);
   std::fprintf(stderr, "\n[  WORKER  ] the process running the task's code is gone (%s); this test has no verdict\n",
                why.c_str());
   std::fflush(stderr);
-  std::_Exit(kWorkerLost);
+  std::_Exit(status);
 }
 
 // Starts the worker with the requests on its descriptor 4 and its answers on 3.
@@ -85,6 +86,9 @@ Link* make_link() {
   // Nothing of this process may be read through /proc by a process of the
   // same user (the worker, when no PID namespace keeps it from seeing this one).
   ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+  // A worker that died is seen as a failed write (EPIPE), not as a signal
+  // that would end this process without saying so.
+  ::signal(SIGPIPE, SIG_IGN);
   int in = -1, out = -1;
   for (const std::string& a : own_arguments()) {
     char extra;
@@ -96,6 +100,11 @@ Link* make_link() {
   }
   if (in < 0 || out < 0) return nullptr;
   auto* link = new Link(in, out);
+  try {
+    link->await_hello();
+  } catch (const LinkBroken& e) {
+    worker_lost(e.what(), kWorkerNeverStarted);
+  }
   serve_callbacks(*link);
   return link;
 }

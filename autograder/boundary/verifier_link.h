@@ -19,6 +19,9 @@ namespace pt::boundary {
 // that was running gets no verdict, and pt-grade charges it with the worker's
 // end and starts both again on the tests left.
 constexpr int kWorkerLost = 87;
+// ... and when it never reached its main (a static initializer): it would
+// do the same for every test, so pt-grade charges them all at once.
+constexpr int kWorkerNeverStarted = 88;
 
 // Calls the worker (one call at a time, from any thread). A broken link ends
 // this process with kWorkerLost after saying why on stderr.

@@ -133,6 +133,14 @@ std::string Link::call(Call call, const Writer& args) {
   }
 }
 
+void Link::hello() { send(Kind::Return, 0, ""); }
+
+void Link::await_hello() {
+  Message m;
+  if (!receive(m)) throw LinkBroken("the worker ended before its main started");
+  if (m.kind != Kind::Return || m.call != 0 || !m.payload.empty()) throw LinkBroken("the worker did not say hello");
+}
+
 void Link::serve() {
   for (Message m; receive(m);) {
     if (m.kind != Kind::Request) throw LinkBroken("an answer to a call that was not made");

@@ -129,6 +129,10 @@ class Link {
   std::string call(Call call, const Writer& args);
   // Serves calls until the peer closes its end (the worker's main loop).
   void serve();
+  // The worker says it has reached main (its static initializers are done);
+  // the verifier waits for that before its first call.
+  void hello();
+  void await_hello();
 
  private:
   struct Message {

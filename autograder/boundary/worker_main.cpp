@@ -18,6 +18,7 @@ int main() {
   pt::boundary::Link link(4, 3);
   pt::boundary::serve_task_calls(link);
   try {
+    link.hello();
     link.serve();
   } catch (const pt::boundary::LinkBroken& e) {
     std::fprintf(stderr, "worker: %s\n", e.what());
