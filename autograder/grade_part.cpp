@@ -95,20 +95,25 @@ RunOutcome not_run(const std::string& why) {
 // reached its main (boundary/verifier_link.h).
 constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88;
 
-// The worker's run ends when its verifier's has (or sooner, by itself): the
-// grader closes the write end of `verifier_done`.
+// The worker's run ends a second after its verifier's (the grader closes the
+// write end of `verifier_done`), or sooner, by itself: a worker that has
+// already died is seen dead, not stopped, and one still running reads the end
+// of its link and leaves.
 class WorkerWatch : public RunObserver {
  public:
   explicit WorkerWatch(int verifier_done) : verifier_done_(verifier_done) {}
   void on_channel(std::string_view) override {}
   Deadline deadline() const override {
-    pollfd p{verifier_done_, POLLIN, 0};
-    const bool over = ::poll(&p, 1, 0) > 0;
-    return {over ? Clock::now() : Clock::now() + std::chrono::hours(1), 0};
+    if (ends_ == Clock::time_point::max()) {
+      pollfd p{verifier_done_, POLLIN, 0};
+      if (::poll(&p, 1, 0) > 0) ends_ = Clock::now() + std::chrono::seconds(1);
+    }
+    return {std::min(ends_, Clock::now() + std::chrono::hours(1)), 0};
   }
 
  private:
   int verifier_done_;
+  mutable Clock::time_point ends_ = Clock::time_point::max();
 };
 
 // A worker's RunOutcome, from the helper process that ran it.
