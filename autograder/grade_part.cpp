@@ -93,7 +93,7 @@ RunOutcome not_run(const std::string& why) {
 
 // The verifier's exit status when its worker is gone, and when it never
 // reached its main (boundary/verifier_link.h).
-constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88;
+constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88, kWorkerBrokeLink = 89;
 
 // The worker's run ends a second after its verifier's (the grader closes the
 // write end of `verifier_done`), or sooner, by itself: a worker that has
@@ -315,6 +315,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     const bool worker_exit = !worker.empty() && run.exit.how == Exit::How::Exited;
     const bool worker_lost = worker_exit && run.exit.code == kWorkerLost;
     const bool worker_never_started = worker_exit && run.exit.code == kWorkerNeverStarted;
+    const bool worker_broke_link = worker_exit && run.exit.code == kWorkerBrokeLink;
     ++res.runs;
     output_bytes += run.output_bytes;
     if (log) {
@@ -363,10 +364,12 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       TestResult& t = res.tests[it->second];
       const bool hung = run.exit.how == Exit::How::TimedOut;
       t.status = hung ? TestResult::Status::TimedOut : TestResult::Status::Crashed;
-      t.message = worker_lost ? "the worker running the task's code " + worker_run.exit.describe() + " during this test"
+      t.message = worker_broke_link ? "the worker running the task's code broke the link to the tests (it wrote what "
+                                      "no honest worker writes) during this test"
+                  : worker_lost ? "the worker running the task's code " + worker_run.exit.describe() + " during this test"
                   : run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
                                                       : why_died(run.exit, watch, limits);
-      t.output = last_lines(worker_lost ? worker_run.output : run.output);
+      t.output = last_lines(worker_lost || worker_broke_link ? worker_run.output : run.output);
       (hung ? timed_out : crashed) += 1;
       if (hung) hung_tasks.insert(t.test.task);
       ++resolved;

@@ -102,8 +102,10 @@ Link* make_link() {
   auto* link = new Link(in, out);
   try {
     link->await_hello();
-  } catch (const LinkBroken& e) {
+  } catch (const LinkClosed& e) {
     worker_lost(e.what(), kWorkerNeverStarted);
+  } catch (const LinkBroken& e) {
+    worker_lost(e.what(), kWorkerBrokeLink);
   }
   serve_callbacks(*link);
   return link;
@@ -125,8 +127,10 @@ std::string call_worker(Call call, const Writer& args) {
         "--pt_worker=PATH (e.g. part1_worker), or through pt-grade");
   try {
     return link->call(call, args);
-  } catch (const LinkBroken& e) {
+  } catch (const LinkClosed& e) {
     worker_lost(e.what());
+  } catch (const LinkBroken& e) {
+    worker_lost(e.what(), kWorkerBrokeLink);
   }
 }
 

@@ -22,6 +22,8 @@ constexpr int kWorkerLost = 87;
 // ... and when it never reached its main (a static initializer): it would
 // do the same for every test, so pt-grade charges them all at once.
 constexpr int kWorkerNeverStarted = 88;
+// ... and when it wrote what no honest worker writes on the link.
+constexpr int kWorkerBrokeLink = 89;
 
 // Calls the worker (one call at a time, from any thread). A broken link ends
 // this process with kWorkerLost after saying why on stderr.

@@ -56,7 +56,7 @@ bool Link::fill(size_t n) {
 bool Link::receive(Message& m) {
   if (!fill(kHeader)) {
     if (buffer_.size() == start_) return false;  // ended between messages
-    throw LinkBroken("the other side closed the link in the middle of a message");
+    throw LinkClosed("the other side closed the link in the middle of a message");
   }
   uint32_t length;
   std::memcpy(&length, buffer_.data() + start_, 4);
@@ -65,7 +65,7 @@ bool Link::receive(Message& m) {
   if (length > kMaxPayload) throw LinkBroken("a message of " + std::to_string(length) + " bytes");
   if (kind < 1 || kind > 3) throw LinkBroken("a message of unknown kind " + std::to_string(kind));
   m.kind = static_cast<Kind>(kind);
-  if (!fill(kHeader + length)) throw LinkBroken("the other side closed the link in the middle of a message");
+  if (!fill(kHeader + length)) throw LinkClosed("the other side closed the link in the middle of a message");
   m.payload.assign(buffer_, start_ + kHeader, length);
   start_ += kHeader + length;
   return true;
@@ -81,6 +81,7 @@ void Link::send(Kind kind, uint16_t call, const std::string& payload) {
   for (size_t done = 0; done < bytes.size();) {
     const ssize_t n = ::write(out_, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EPIPE) throw LinkClosed("the other side closed the link");
     if (n <= 0) throw LinkBroken(std::string("writing the link: ") + std::strerror(errno));
     done += static_cast<size_t>(n);
   }
@@ -114,7 +115,7 @@ void Link::handle(const Message& m) {
 std::string Link::call(Call call, const Writer& args) {
   send(Kind::Request, static_cast<uint16_t>(call), args.bytes());
   for (Message m;;) {
-    if (!receive(m)) throw LinkBroken("the other side closed the link before answering");
+    if (!receive(m)) throw LinkClosed("the other side closed the link before answering");
     if (m.kind == Kind::Request) {
       handle(m);
       continue;
@@ -137,7 +138,7 @@ void Link::hello() { send(Kind::Return, 0, ""); }
 
 void Link::await_hello() {
   Message m;
-  if (!receive(m)) throw LinkBroken("the worker ended before its main started");
+  if (!receive(m)) throw LinkClosed("the worker ended before its main started");
   if (m.kind != Kind::Return || m.call != 0 || !m.payload.empty()) throw LinkBroken("the worker did not say hello");
 }
 

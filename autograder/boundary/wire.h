@@ -50,6 +50,10 @@ constexpr uint32_t kMaxPayload = 64u << 20;
 struct LinkBroken : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// ... because the peer is gone (the end of the stream, a write nobody reads).
+struct LinkClosed : LinkBroken {
+  using LinkBroken::LinkBroken;
+};
 
 class Writer {
  public:
