@@ -33,6 +33,15 @@ void heading(const char* text) { std::printf("\n== %s\n", text); }
 
 std::string indented(const std::string& text) { return folded(text, "   "); }
 
+// Whether the grader runs part `part`'s tests in a verifier and its task code
+// in a worker (boundary/README.md), as this build was configured.
+bool across_boundary(int part) {
+  std::istringstream parts(PT_BOUNDARY_PARTS);
+  for (std::string p; std::getline(parts, p, ',');)
+    if (p == std::to_string(part)) return true;
+  return false;
+}
+
 // SHA-256 of each file by coreutils' sha256sum (one run for all of them);
 // a file that cannot be read is left out.
 std::map<std::string, std::string> sha256_of(const fs::path& source, const std::vector<std::string>& files) {
@@ -157,14 +166,22 @@ int check_submission(const CheckOptions& opt) {
   }
 
   heading("4. Each part built on its own, as the grader builds it");
-  std::map<int, std::string> binaries;
+  std::map<int, std::string> binaries, workers;
   for (const TaskFile* f : buildable) {
-    const std::string target = "part" + std::to_string(f->part) + "_tests";
-    std::printf("   $ cmake --build %s --target %s\n", opt.build_dir.c_str(), target.c_str());
+    // A part graded across the process boundary (boundary/README.md) is built
+    // as the grader builds it: a worker of the task file, and the tests'
+    // verifier beside it (here with the visible tests only).
+    const bool across = across_boundary(f->part);
+    const std::string part = "part" + std::to_string(f->part);
+    const std::string target = part + (across ? "_worker" : "_tests");
+    std::printf("   $ cmake --build %s --target %s%s\n", opt.build_dir.c_str(), target.c_str(),
+                across ? (" " + part + "_verify").c_str() : "");
     std::fflush(stdout);
     std::string out;
     const auto start = std::chrono::steady_clock::now();
-    const int rc = run_command({"cmake", "--build", build.string(), "--target", target}, &out);
+    std::vector<std::string> command{"cmake", "--build", build.string(), "--target", target};
+    if (across) command.push_back(part + "_verify");
+    const int rc = run_command(command, &out);
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rc != 0) {
       const std::string why = f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n" +
@@ -191,7 +208,12 @@ int check_submission(const CheckOptions& opt) {
       continue;
     }
     std::printf("   part %d: built in %.0f s\n", f->part, std::round(took));
-    binaries[f->part] = (build / "tests" / target).string();
+    if (across) {
+      binaries[f->part] = (build / "tests" / (part + "_verify")).string();
+      workers[f->part] = (build / "tests" / target).string();
+    } else {
+      binaries[f->part] = (build / "tests" / target).string();
+    }
   }
 
   heading("5. The visible tests");
@@ -209,7 +231,8 @@ int check_submission(const CheckOptions& opt) {
   Sandbox sandbox(opt.sandbox);
   for (const auto& [part, tests] : manifest.parts) {
     if (auto it = binaries.find(part); it != binaries.end())
-      report.parts.push_back(grade_binary(part, it->second, tests, opt.limits, sandbox, it->second + ".grade.log"));
+      report.parts.push_back(grade_binary(part, it->second, tests, opt.limits, sandbox, it->second + ".grade.log",
+                                          Redactor(), workers.count(part) ? workers.at(part) : ""));
     else
       report.parts.push_back(pending_part(part, tests, not_graded.count(part) ? not_graded[part] : "not built"));
   }

@@ -219,6 +219,10 @@ elseif(MODE STREQUAL "kit")
       get_filename_component(name ${v} NAME)
       copy_file(${v} verifiers/${name})
       strip_debug(verifiers/${name})
+      # Execute-only for others: a worker running as another user (nobody,
+      # when the grader is root) cannot read the hidden tests in it, even
+      # without Landlock.
+      file(CHMOD ${OUT}/verifiers/${name} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_EXECUTE WORLD_EXECUTE)
     endforeach()
   endif()
   copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
