@@ -8,14 +8,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
-#include <cerrno>
-#include <cstring>
 
 #include "verdicts.h"
 
