@@ -37,8 +37,8 @@ std::vector<std::string> own_arguments() {
 
 [[noreturn]] void worker_lost(const std::string& why, int status = kWorkerLost) {
   std::fflush(stdout);
-  std::fprintf(stderr, "\n[  WORKER  ] the process running the task's code is gone (%s); this test has no verdict\n",
-               why.c_str());
+  std::fprintf(stderr, "\n[  WORKER  ] the link to the process running the task's code ended (%s); this test has no "
+               "verdict\n", why.c_str());
   std::fflush(stderr);
   std::_Exit(status);
 }
