@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -14,6 +15,7 @@
 #include <deque>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -160,6 +162,27 @@ RunOutcome read_outcome(int fd) {
   return r;
 }
 
+// One CPU for a verifier and its worker. They take turns (each waits for the
+// other's answer), and on a virtual machine a wake-up on the other CPU costs
+// far more than the turn itself: Part 1's suite took 0.24 s on one CPU against
+// 1.3-2.0 s spread over two (measured side by side on the 2-core machine).
+// Grader processes are spread over the CPUs they may use by process id.
+std::optional<cpu_set_t> one_cpu() {
+  cpu_set_t allowed;
+  if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return std::nullopt;
+  const int count = CPU_COUNT(&allowed);
+  if (count <= 1) return std::nullopt;
+  int pick = static_cast<int>(::getpid() % count);
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+    if (CPU_ISSET(cpu, &allowed) && pick-- == 0) {
+      cpu_set_t one;
+      CPU_ZERO(&one);
+      CPU_SET(cpu, &one);
+      return one;
+    }
+  return std::nullopt;
+}
+
 // One run of a verifier with its worker beside it, each in its own sandbox
 // run (its own PID namespace where there are namespaces): the worker can
 // neither see the verifier's memory nor write its verdict channel. The
@@ -176,10 +199,16 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
       for (int j = 0; j < i; ++j) ::close(pipes[j][0]), ::close(pipes[j][1]);
       return not_run(why);
     }
+  // Both runs inherit the CPU at their clone: the helper's for the worker,
+  // this thread's (restored after the run) for the verifier.
+  cpu_set_t before;
+  const bool restore = ::sched_getaffinity(0, sizeof before, &before) == 0;
+  const std::optional<cpu_set_t> cpu = one_cpu();
   std::fflush(nullptr);
   const pid_t helper = ::fork();
   if (helper == 0) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (cpu) ::sched_setaffinity(0, sizeof *cpu, &*cpu);
     for (int fd : {to_worker[1], from_worker[0], done[1], outcome[0]}) ::close(fd);
     RunRequest w{worker, {}, "", ""};
     w.link_read = to_worker[0];
@@ -197,7 +226,9 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
   request.args.push_back("--pt_worker_fds=5,6");
   request.link_read = from_worker[0];
   request.link_write = to_worker[1];
+  if (cpu) ::sched_setaffinity(0, sizeof *cpu, &*cpu);
   RunOutcome run = sandbox.run(request, watch);
+  if (cpu && restore) ::sched_setaffinity(0, sizeof before, &before);
   ::close(done[1]);
   worker_run = read_outcome(outcome[0]);
   ::close(outcome[0]);
