@@ -5,11 +5,24 @@
 // its own objects.
 #include "geometry/intersection.h"
 #include "geometry/primitive.h"
+#include "geometry/sphere.h"
+#include "scene/bsdf.h"
 #include "wire.h"
 
 namespace pt::boundary {
 
 enum class Points : uint8_t { Nothing = 0, Asked = 1, Elsewhere = 2 };
+
+// What a hit's "something else" becomes on a side that has no such object
+// of its own: objects nobody else made, so that no test's object equals them.
+inline const Primitive* elsewhere_primitive() {
+  static const Sphere s(Vec3(0.0), 0.0, nullptr);
+  return &s;
+}
+inline const BSDF* elsewhere_bsdf() {
+  static const DiffuseBSDF b{Spectrum(0.0)};
+  return &b;
+}
 
 struct HitSide {
   const Primitive* asked;            // the primitive whose intersect() is called

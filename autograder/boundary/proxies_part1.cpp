@@ -5,7 +5,6 @@
 #include "geometry/triangle.h"
 #include "hit_codec.h"
 #include "render/pathtracer.h"
-#include "scene/bsdf.h"
 #include "scene/camera.h"
 #include "verifier_link.h"
 
@@ -17,23 +16,14 @@ using boundary::call_worker;
 using boundary::Reader;
 using boundary::Writer;
 
-// What an intersection's pointer to "something else" becomes here when it
-// did not point elsewhere already: objects no test made.
-const Primitive* elsewhere_primitive() {
-  static const Sphere s(Vec3(0.0), 0.0, nullptr);
-  return &s;
-}
-const BSDF* elsewhere_bsdf() {
-  static const DiffuseBSDF b{Spectrum(0.0)};
-  return &b;
-}
-
+// "Something else" in an answer is what the hit record pointed at before the
+// call, when that was something else too; otherwise a stand-in.
 boundary::HitSide side_of(const Primitive* asked, const Intersection* before) {
   const BSDF* own = asked->get_bsdf();
   const bool prim_elsewhere = before && before->primitive && before->primitive != asked;
   const bool bsdf_elsewhere = before && before->bsdf && before->bsdf != own;
-  return {asked, prim_elsewhere ? before->primitive : elsewhere_primitive(), own,
-          bsdf_elsewhere ? before->bsdf : elsewhere_bsdf()};
+  return {asked, prim_elsewhere ? before->primitive : boundary::elsewhere_primitive(), own,
+          bsdf_elsewhere ? before->bsdf : boundary::elsewhere_bsdf()};
 }
 
 // A query's answer: hit or not, the ray's range after it, and the hit record.
@@ -76,15 +66,7 @@ Ray Camera::generate_ray(double x, double y) const {
 }
 
 PixelEstimate PathTracer::raytrace_pixel(int x, int y, Rng& rng) const {
-  boundary::TracerScope scope(this);
-  Writer in;
-  in.put(settings).put(*camera).put(x).put(y).put(rng);
-  const std::string answer = call_worker(Call::RaytracePixel, in);
-  Reader out(answer);
-  const auto estimate = out.get<PixelEstimate>();
-  out.get(rng);
-  out.finish();
-  return estimate;
+  return boundary::ask_pixel(Call::RaytracePixel, *this, x, y, rng);
 }
 
 bool Triangle::has_intersection(const Ray& r) const {

@@ -24,15 +24,7 @@ PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, in
 }
 
 PixelEstimate PathTracer::raytrace_pixel_adaptive(int x, int y, Rng& rng) const {
-  boundary::TracerScope scope(this);
-  Writer in;
-  in.put(settings).put(*camera).put(x).put(y).put(rng);
-  const std::string answer = call_worker(Call::RaytracePixelAdaptive, in);
-  Reader out(answer);
-  const auto estimate = out.get<PixelEstimate>();
-  out.get(rng);
-  out.finish();
-  return estimate;
+  return boundary::ask_pixel(Call::RaytracePixelAdaptive, *this, x, y, rng);
 }
 
 std::vector<int> allocate_samples(const std::vector<PilotMoments>& pilot, long long budget) {

@@ -3,6 +3,7 @@
 // (raytrace_pixel, raytrace_pixel_adaptive) calls est_radiance_global_illumination,
 // and the verifier's own tracer answers, be it a test's script or the solution.
 #include "render/pathtracer.h"
+#include "scene/scene.h"
 #include "wire.h"
 
 namespace pt::boundary {
@@ -25,5 +26,18 @@ class RemoteTracer : public PathTracer {
  private:
   Link& link_;
 };
+
+// Serves a pixel's sampling (verifier_link.h, ask_pixel) with the student's
+// `sample_pixel` (&PathTracer::raytrace_pixel or raytrace_pixel_adaptive).
+inline void serve_pixel(Link& link, Reader& in, Writer& out,
+                        PixelEstimate (PathTracer::*sample_pixel)(int, int, Rng&) const) {
+  const auto settings = in.get<RenderSettings>();
+  Scene scene;
+  in.get(scene.camera);
+  const auto x = in.get<int>(), y = in.get<int>();
+  auto rng = in.get<Rng>();
+  const RemoteTracer tracer(scene, settings, link);
+  out.put((tracer.*sample_pixel)(x, y, rng)).put(rng);
+}
 
 }  // namespace pt::boundary

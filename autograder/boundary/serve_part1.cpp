@@ -7,25 +7,16 @@
 #include "remote_tracer.h"
 #include "scene/bsdf.h"
 #include "scene/camera.h"
-#include "scene/scene.h"
 
 namespace pt::boundary {
 namespace {
 
-// Stand-ins for the verifier's objects that only need to be told apart.
+// The BSDF of the primitive asked, when the verifier's has one: it only
+// needs to be told apart from "nothing" and "something else".
 const BSDF* own_bsdf() {
   static const DiffuseBSDF b{Spectrum(0.5)};
   return &b;
 }
-const Primitive* elsewhere_primitive() {
-  static const Sphere s(Vec3(0.0), 0.0, nullptr);
-  return &s;
-}
-const BSDF* elsewhere_bsdf() {
-  static const DiffuseBSDF b{Spectrum(0.0)};
-  return &b;
-}
-
 HitSide side_of(const Primitive* asked) { return {asked, elsewhere_primitive(), asked->get_bsdf(), elsewhere_bsdf()}; }
 
 // Runs one query on `prim` and writes the answer as proxies_part1.cpp reads it.
@@ -69,15 +60,8 @@ void serve_task_calls(Link& link) {
     const auto x = in.get<double>(), y = in.get<double>();
     out.put(camera.generate_ray(x, y));
   });
-  link.on(Call::RaytracePixel, [&link](Reader& in, Writer& out) {
-    const auto settings = in.get<RenderSettings>();
-    Scene scene;
-    in.get(scene.camera);
-    const auto x = in.get<int>(), y = in.get<int>();
-    auto rng = in.get<Rng>();
-    const RemoteTracer tracer(scene, settings, link);
-    out.put(tracer.raytrace_pixel(x, y, rng)).put(rng);
-  });
+  link.on(Call::RaytracePixel,
+          [&link](Reader& in, Writer& out) { serve_pixel(link, in, out, &PathTracer::raytrace_pixel); });
   auto triangle = [](bool closest) {
     return [closest](Reader& in, Writer& out) {
       const TriangleCall t(in);

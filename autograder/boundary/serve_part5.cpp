@@ -1,7 +1,6 @@
 // The worker's Part 5: the verifier's calls (proxies_part5.cpp) answered by
 // the student's task functions; the samples they draw come from the verifier.
 #include "remote_tracer.h"
-#include "scene/scene.h"
 
 namespace pt::boundary {
 
@@ -19,13 +18,7 @@ void serve_task_calls(Link& link) {
     out.put(sample_adaptively(next_sample, max_samples, samples_per_batch, max_tolerance));
   });
   link.on(Call::RaytracePixelAdaptive, [&link](Reader& in, Writer& out) {
-    const auto settings = in.get<RenderSettings>();
-    Scene scene;
-    in.get(scene.camera);
-    const auto x = in.get<int>(), y = in.get<int>();
-    auto rng = in.get<Rng>();
-    const RemoteTracer tracer(scene, settings, link);
-    out.put(tracer.raytrace_pixel_adaptive(x, y, rng)).put(rng);
+    serve_pixel(link, in, out, &PathTracer::raytrace_pixel_adaptive);
   });
   link.on(Call::AllocateSamples, [](Reader& in, Writer& out) {
     const auto pilot = in.get_vector<PilotMoments>(kMaxPayload / sizeof(PilotMoments));

@@ -134,6 +134,18 @@ std::string call_worker(Call call, const Writer& args) {
   }
 }
 
+PixelEstimate ask_pixel(Call call, const PathTracer& tracer, int x, int y, Rng& rng) {
+  TracerScope scope(&tracer);
+  Writer in;
+  in.put(tracer.settings).put(*tracer.camera).put(x).put(y).put(rng);
+  const std::string answer = call_worker(call, in);
+  Reader out(answer);
+  const auto estimate = out.get<PixelEstimate>();
+  out.get(rng);
+  out.finish();
+  return estimate;
+}
+
 TracerScope::TracerScope(const PathTracer* tracer) : previous_(g_tracer) { g_tracer = tracer; }
 TracerScope::~TracerScope() { g_tracer = previous_; }
 

@@ -29,6 +29,11 @@ constexpr int kWorkerBrokeLink = 89;
 // this process with kWorkerLost after saying why on stderr.
 std::string call_worker(Call call, const Writer& args);
 
+// A pixel's sampling (P1T2's raytrace_pixel, P5T1's adaptive one) in the
+// worker: the settings, camera, pixel and generator go, the estimate and the
+// generator's state come back, and the radiance of each sample is `tracer`'s.
+PixelEstimate ask_pixel(Call call, const PathTracer& tracer, int x, int y, Rng& rng);
+
 // While one lives, the worker's calls back to EstRadiance go to `tracer`
 // (its own est_radiance_global_illumination: a test's scripted one, or the
 // solution's).
