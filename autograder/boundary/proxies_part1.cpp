@@ -28,13 +28,15 @@ boundary::HitSide side_of(const Primitive* asked, const Intersection* before) {
 
 // A query's answer: hit or not, the ray's range after it, and the hit record.
 bool take_answer(const std::string& answer, const Ray& r, Intersection* isect, const boundary::HitSide& side) {
-  Reader out(answer);
-  const bool hit = out.get<uint8_t>() != 0;
-  r.min_t = out.get<double>();
-  r.max_t = out.get<double>();
-  if (isect) boundary::get_hit(out, *isect, side);
-  out.finish();
-  return hit;
+  return boundary::read_answer([&] {
+    Reader out(answer);
+    const bool hit = out.get<uint8_t>() != 0;
+    r.min_t = out.get<double>();
+    r.max_t = out.get<double>();
+    if (isect) boundary::get_hit(out, *isect, side);
+    out.finish();
+    return hit;
+  });
 }
 
 Writer triangle_query(const Triangle& t, const Ray& r, const Intersection* isect, const boundary::HitSide& side) {
@@ -59,10 +61,12 @@ Ray Camera::generate_ray(double x, double y) const {
   Writer in;
   in.put(*this).put(x).put(y);
   const std::string answer = call_worker(Call::GenerateRay, in);
-  Reader out(answer);
-  const auto ray = out.get<Ray>();
-  out.finish();
-  return ray;
+  return boundary::read_answer([&] {
+    Reader out(answer);
+    const auto ray = out.get<Ray>();
+    out.finish();
+    return ray;
+  });
 }
 
 PixelEstimate PathTracer::raytrace_pixel(int x, int y, Rng& rng) const {
@@ -83,12 +87,14 @@ bool Sphere::test(const Ray& ray, double& t1, double& t2) const {
   Writer in = sphere_query(*this, ray, nullptr, side_of(this, nullptr));
   in.put(t1).put(t2);
   const std::string answer = call_worker(Call::SphereTest, in);
-  Reader out(answer);
-  const bool roots = out.get<uint8_t>() != 0;
-  out.get(t1);
-  out.get(t2);
-  out.finish();
-  return roots;
+  return boundary::read_answer([&] {
+    Reader out(answer);
+    const bool roots = out.get<uint8_t>() != 0;
+    out.get(t1);
+    out.get(t2);
+    out.finish();
+    return roots;
+  });
 }
 
 bool Sphere::has_intersection(const Ray& ray) const {

@@ -17,10 +17,12 @@ PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, in
   Writer in;
   in.put(max_samples).put(samples_per_batch).put(max_tolerance);
   const std::string answer = call_worker(Call::SampleAdaptively, in);
-  Reader out(answer);
-  const auto estimate = out.get<PixelEstimate>();
-  out.finish();
-  return estimate;
+  return boundary::read_answer([&] {
+    Reader out(answer);
+    const auto estimate = out.get<PixelEstimate>();
+    out.finish();
+    return estimate;
+  });
 }
 
 PixelEstimate PathTracer::raytrace_pixel_adaptive(int x, int y, Rng& rng) const {
@@ -31,11 +33,13 @@ std::vector<int> allocate_samples(const std::vector<PilotMoments>& pilot, long l
   Writer in;
   in.put_vector(pilot).put(budget);
   const std::string answer = call_worker(Call::AllocateSamples, in);
-  Reader out(answer);
-  // Any length the message can hold: a wrong one is for the tests to see.
-  auto counts = out.get_vector<int>(boundary::kMaxPayload / sizeof(int));
-  out.finish();
-  return counts;
+  return boundary::read_answer([&] {
+    Reader out(answer);
+    // Any length the message can hold: a wrong one is for the tests to see.
+    auto counts = out.get_vector<int>(boundary::kMaxPayload / sizeof(int));
+    out.finish();
+    return counts;
+  });
 }
 
 }  // namespace pt

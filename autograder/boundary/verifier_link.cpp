@@ -134,16 +134,42 @@ std::string call_worker(Call call, const Writer& args) {
   }
 }
 
+void answer_broke_link(const std::string& why) { worker_lost(why, kWorkerBrokeLink); }
+
+std::unique_lock<std::recursive_mutex> hold_link() { return std::unique_lock<std::recursive_mutex>(link_mutex()); }
+
+SceneRef refer_to(const Scene& scene) {
+  std::lock_guard<std::recursive_mutex> lock(link_mutex());
+  static const Scene* sent = nullptr;
+  static uint64_t sent_revision = 0, id = 0;
+  static SceneIndex index;
+  if (&scene != sent || scene.revision() != sent_revision) {
+    Writer definition;
+    SceneIndex new_index;
+    definition.put(id + 1);
+    put_scene(definition, scene, new_index);
+    sent = nullptr;  // the worker's scene is unknown until it answers
+    call_worker(Call::DefineScene, definition);
+    index = std::move(new_index);
+    sent = &scene;
+    sent_revision = scene.revision();
+    ++id;
+  }
+  return {id, index};
+}
+
 PixelEstimate ask_pixel(Call call, const PathTracer& tracer, int x, int y, Rng& rng) {
   TracerScope scope(&tracer);
   Writer in;
   in.put(tracer.settings).put(*tracer.camera).put(x).put(y).put(rng);
   const std::string answer = call_worker(call, in);
-  Reader out(answer);
-  const auto estimate = out.get<PixelEstimate>();
-  out.get(rng);
-  out.finish();
-  return estimate;
+  return read_answer([&] {
+    Reader out(answer);
+    const auto estimate = out.get<PixelEstimate>();
+    out.get(rng);
+    out.finish();
+    return estimate;
+  });
 }
 
 TracerScope::TracerScope(const PathTracer* tracer) : previous_(g_tracer) { g_tracer = tracer; }

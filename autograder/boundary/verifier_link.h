@@ -8,9 +8,12 @@
 //                           in the sandbox, on pipes at these descriptors)
 //   --pt_worker=PATH        start PATH here (a student's or ctest's run)
 // Without either, every proxy fails its test saying so.
+#include <cstdint>
+#include <mutex>
 #include <string>
 
 #include "render/pathtracer.h"
+#include "scene_codec.h"
 #include "wire.h"
 
 namespace pt::boundary {
@@ -28,6 +31,34 @@ constexpr int kWorkerBrokeLink = 89;
 // Calls the worker (one call at a time, from any thread). A broken link ends
 // this process with kWorkerLost after saying why on stderr.
 std::string call_worker(Call call, const Writer& args);
+
+// Keeps other threads off the link for a sequence of calls that belong
+// together (a scene's definition and the calls that name it).
+std::unique_lock<std::recursive_mutex> hold_link();
+
+// The id under which the worker keeps `scene`, sent now unless it is the
+// scene sent last (the same object, unchanged since: Scene::revision), and
+// the index of its objects. Call with the link held until the calls that
+// name it are made.
+struct SceneRef {
+  uint64_t id;
+  const SceneIndex& index;
+};
+SceneRef refer_to(const Scene& scene);
+
+// Runs `read`, which reads an answer of the worker: an answer that does not
+// read as its call's values (too short, too long, a run longer than asked
+// for) breaks the link as a malformed message does, and this process ends
+// with kWorkerBrokeLink.
+[[noreturn]] void answer_broke_link(const std::string& why);
+template <class Read>
+auto read_answer(Read&& read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const LinkBroken& e) {
+    answer_broke_link(e.what());
+  }
+}
 
 // A pixel's sampling (P1T2's raytrace_pixel, P5T1's adaptive one) in the
 // worker: the settings, camera, pixel and generator go, the estimate and the

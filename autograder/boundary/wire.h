@@ -35,6 +35,15 @@ enum class Call : uint16_t {
   SphereTest,
   SphereHas,
   SphereIntersect,
+  // Scenes (parts 3 and 4): one crosses once, then calls name it
+  DefineScene = 20,
+  // Part 3
+  DiffuseF = 30,
+  DiffuseSampleF,
+  ZeroBounce,
+  DirectHemisphere,
+  DirectImportance,
+  OneBounce,
   // Part 5
   SampleAdaptively = 50,
   RaytracePixelAdaptive,
@@ -57,12 +66,18 @@ struct LinkClosed : LinkBroken {
 
 class Writer {
  public:
+  Writer() = default;
+  explicit Writer(size_t capacity) { bytes_.reserve(capacity); }
   template <class T>
   Writer& put(const T& value) {
     static_assert(std::is_trivially_copyable_v<T>, "only plain values cross as bytes");
     const size_t at = bytes_.size();
     bytes_.resize(at + sizeof(T));
     std::memcpy(bytes_.data() + at, &value, sizeof(T));
+    return *this;
+  }
+  Writer& put_bytes(const std::string& bytes) {
+    bytes_.append(bytes);
     return *this;
   }
   Writer& put_string(const std::string& s) {

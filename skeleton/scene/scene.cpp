@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <atomic>
+
 #include "core/stats.h"
 #include "geometry/counted.h"
 #include "geometry/sphere.h"
@@ -7,7 +9,13 @@
 
 namespace pt {
 
+uint64_t Scene::next_revision() {
+  static std::atomic<uint64_t> last{0};
+  return ++last;
+}
+
 const Mesh* Scene::add_mesh(Mesh mesh) {
+  touch();
   if (mesh.normals.size() != mesh.positions.size()) mesh.compute_vertex_normals();
   meshes.push_back(std::make_unique<Mesh>(std::move(mesh)));
   const Mesh* m = meshes.back().get();
@@ -16,6 +24,7 @@ const Mesh* Scene::add_mesh(Mesh mesh) {
 }
 
 void Scene::add_sphere(const Vec3& center, double radius, const BSDF* bsdf) {
+  touch();
   primitives.push_back(std::make_unique<Counted<Sphere>>(center, radius, bsdf));
 }
 
@@ -41,6 +50,7 @@ void Scene::add_area_light(const Spectrum& radiance, const Vec3& center, const V
 }
 
 void Scene::build(size_t max_leaf_size) {
+  touch();
   std::vector<Primitive*> prims;
   prims.reserve(primitives.size());
   for (auto& p : primitives) prims.push_back(p.get());
