@@ -8,11 +8,12 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "hit_codec.h"
+#include "path_guard_copy.h"
 
 namespace pt::boundary {
 namespace {
 
-enum class BsdfKind : uint8_t { Diffuse = 1, Emission = 2 };
+BsdfEncoder g_encoder = nullptr;
 enum class PrimitiveKind : uint8_t { Triangle = 1, Sphere = 2 };
 enum class LightKind : uint8_t { Point = 1, Directional = 2, Area = 3, Sky = 4 };
 
@@ -46,7 +47,7 @@ void put_bsdf(Writer& w, const BSDF& b) {
     w.put(BsdfKind::Diffuse).put(d->reflectance).put(d->emission);
   } else if (const auto* e = exactly<EmissionBSDF>(b)) {
     w.put(BsdfKind::Emission).put(e->radiance);
-  } else {
+  } else if (!g_encoder || !g_encoder(w, b)) {
     cannot_cross("BSDF", typeid(b));
   }
 }
@@ -98,6 +99,8 @@ void get_light(Reader& r, Scene& scene) {
 
 }  // namespace
 
+void set_bsdf_encoder(BsdfEncoder encode) { g_encoder = encode; }
+
 void put_scene(Writer& w, const Scene& scene, SceneIndex& index) {
   index = SceneIndex();
   w.put(static_cast<uint64_t>(scene.bsdfs.size()));
@@ -134,6 +137,12 @@ std::unique_ptr<Scene> get_scene(Reader& r) {
         break;
       }
       case BsdfKind::Emission: scene->add_bsdf<EmissionBSDF>(r.get<Spectrum>()); break;
+      case BsdfKind::GuardedDiffuse: {
+        const auto reflectance = r.get<Spectrum>();
+        scene->add_bsdf<GuardedDiffuseCopy>(reflectance, r.get<Spectrum>());
+        break;
+      }
+      case BsdfKind::NormalMirror: scene->add_bsdf<NormalMirrorCopy>(); break;
       default: throw std::runtime_error("a BSDF of unknown kind");
     }
   }

@@ -25,6 +25,14 @@ struct SceneIndex {
   std::unordered_map<const BSDF*, int64_t> bsdfs;
 };
 
+enum class BsdfKind : uint8_t { Diffuse = 1, Emission = 2, GuardedDiffuse = 3, NormalMirror = 4 };
+
+// BSDF types of the tests that the worker has copies of (path_guard_copy.h):
+// the verifier's proxies set an encoder that writes their kind and values and
+// returns true, or returns false for a type it does not know.
+using BsdfEncoder = bool (*)(Writer& w, const BSDF& bsdf);
+void set_bsdf_encoder(BsdfEncoder encode);
+
 // Writes the scene's BSDFs, its primitives in order, its lights and camera,
 // and fills `index`. What cannot cross (a BSDF, light or primitive of a type
 // the framework does not define) is a std::logic_error that names it.

@@ -1,30 +1,12 @@
 // The worker's Part 3: the verifier's calls (proxies_part3.cpp) answered by
 // the student's task functions, on the scene the verifier sent last.
-#include <memory>
-
 #include "render/pathtracer.h"
 #include "repeated_call.h"
 #include "scene/bsdf.h"
-#include "scene_codec.h"
+#include "worker_scenes.h"
 
 namespace pt::boundary {
 namespace {
-
-struct SentScene {
-  uint64_t id = 0;
-  std::unique_ptr<Scene> scene;
-};
-
-SentScene& sent() {
-  static SentScene s;
-  return s;
-}
-
-const Scene& scene_named(Reader& in) {
-  const auto id = in.get<uint64_t>();
-  if (!sent().scene || id != sent().id) throw std::runtime_error("a call names a scene the worker was not sent");
-  return *sent().scene;
-}
 
 DiffuseBSDF diffuse_from(Reader& in) {
   const auto reflectance = in.get<Spectrum>();
@@ -45,12 +27,7 @@ void serve_estimate(Reader& in, Writer& out) {
 }  // namespace
 
 void serve_task_calls(Link& link) {
-  link.on(Call::DefineScene, [](Reader& in, Writer&) {
-    const auto id = in.get<uint64_t>();
-    sent().scene.reset();
-    sent().scene = get_scene(in);
-    sent().id = id;
-  });
+  serve_scene_definitions(link);
   link.on(Call::DiffuseF, [](Reader& in, Writer& out) {
     const DiffuseBSDF bsdf = diffuse_from(in);
     const auto wo = in.get<Vec3>(), wi = in.get<Vec3>();

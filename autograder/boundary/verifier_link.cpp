@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 extern char** environ;
@@ -58,9 +60,18 @@ void start_worker(const std::string& path, int& in, int& out) {
   posix_spawn_file_actions_adddup2(&actions, answers[1], 3);
   posix_spawn_file_actions_adddup2(&actions, requests[0], 4);
   posix_spawn_file_actions_addclosefrom_np(&actions, 5);
-  char* argv[] = {const_cast<char*>(path.c_str()), nullptr};
-  pid_t pid = 0;
-  const int err = ::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ);
+  // The worker dies with the thread that started it (PR_SET_PDEATHSIG), so a
+  // thread that lives as long as this process starts it, whichever thread
+  // asks first: a renderer's pool thread ends with its render.
+  auto spawned = std::make_shared<std::promise<int>>();
+  std::future<int> result = spawned->get_future();
+  std::thread([spawned, &actions, &path] {
+    char* argv[] = {const_cast<char*>(path.c_str()), nullptr};
+    pid_t pid = 0;
+    spawned->set_value(::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ));
+    for (;;) ::pause();
+  }).detach();
+  const int err = result.get();
   posix_spawn_file_actions_destroy(&actions);
   if (err != 0) worker_lost("could not start " + path + ": " + std::strerror(err));
   ::close(answers[1]);

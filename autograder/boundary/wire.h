@@ -44,6 +44,9 @@ enum class Call : uint16_t {
   DirectHemisphere,
   DirectImportance,
   OneBounce,
+  // Part 4
+  AtLeastOneBounce = 40,
+  GlobalIllumination,
   // Part 5
   SampleAdaptively = 50,
   RaytracePixelAdaptive,
