@@ -6,6 +6,9 @@
 // count and the limit with each estimate, the worker's copies count and stop
 // the path here, and the count comes back with the answer, where the test's
 // own guard then says what it says in one process (proxies_part4.cpp).
+// The copies repeat the tests' few lines on purpose (the worker may hold
+// nothing of the tests); every Part 4 test passing across the boundary for the
+// solution (ctest boundary:*) is what shows that they behave the same.
 #include <cstdint>
 #include <stdexcept>
 

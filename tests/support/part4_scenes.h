@@ -85,6 +85,9 @@ inline std::string guard_reason(int max_ray_depth, double rr_continue_prob) {
 
 // Lambertian (the student's P3T1 when it is the student's binary; in the
 // Part 4 binaries, the reference) that counts its samples in the guard.
+// Across the process boundary the worker rebuilds this and NormalMirror as
+// copies of its own (autograder/boundary/path_guard_copy.h: it may hold
+// nothing of the tests); a change here is made there too.
 class GuardedDiffuse : public DiffuseBSDF {
  public:
   using DiffuseBSDF::DiffuseBSDF;
