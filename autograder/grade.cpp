@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "build_paths.h"
 #include "check_submission.h"
 #include "checks.h"
 #include "command.h"
@@ -119,9 +120,7 @@ int run(const std::string& build_dir, const std::vector<int>& numbers, const std
   const Redactor redactor(manifest ? manifest->solution_lines : std::set<uint64_t>());
   Sandbox sandbox(opt.sandbox);
   Report report = start_report(sandbox);
-#ifdef PT_SOURCE_ROOT
-  report.hidden_not_run = hidden_not_run_in(PT_SOURCE_ROOT);  // the student release's hidden tests
-#endif
+  report.hidden_not_run = hidden_not_run_in(build_paths::source_root());  // the student release's hidden tests
   auto save = [&] {
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!json_path.empty()) write_results_json(json_path, report);
@@ -228,9 +227,7 @@ int main(int argc, char** argv) {
       "--budget for all parts (defaults below). The sandbox's layers: pt-grade sandbox.\n"
       "Exit status: 0 graded (whatever the score) or check passed, 1 check failed, 2 could not grade.");
   Options opt;
-#ifdef PT_GRADE_READABLE
-  opt.sandbox.readable = {PT_GRADE_READABLE};
-#endif
+  opt.sandbox.readable = {build_paths::grade_readable()};
   const CLI::Validator seconds(
       [](std::string& text) -> std::string {
         char* end = nullptr;
@@ -324,9 +321,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
 
   SubmissionOptions sub;
-#ifdef PT_DEFAULT_KIT
-  sub.kit = PT_DEFAULT_KIT;
-#endif
+  sub.kit = build_paths::default_kit();
   {
     // A kit's own copy of pt-grade (KIT/bin/pt-grade) grades with that kit.
     std::error_code ec;
@@ -358,10 +353,8 @@ int main(int argc, char** argv) {
                            "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
 
   CheckOptions check;
-#if defined(PT_SOURCE_ROOT) && defined(PT_BINARY_ROOT)
-  check.source_dir = PT_SOURCE_ROOT;
-  check.build_dir = PT_BINARY_ROOT;
-#endif
+  check.source_dir = build_paths::source_root();
+  check.build_dir = build_paths::binary_root();
   check.tasks = (fs::path(check.source_dir) / "tasks").string();
   CLI::App* check_cmd = app.add_subcommand(
       "check-submission",
