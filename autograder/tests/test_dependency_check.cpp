@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "dependency_check.h"
+#include "pt_source_dir.h"
 #include "source_scan.h"
 
 namespace pt::grade {
@@ -76,7 +77,7 @@ TEST_F(DependencyCheck, WithoutTheProbesRecordNothingPasses) {
 
 // The probe the kit compiles includes every header the intake allows.
 TEST(HeaderProbe, IncludesEveryHeaderTheIntakeAllows) {
-  std::ifstream in(std::string(PT_CHECKOUT) + "/autograder/header_probe.cpp");
+  std::ifstream in(std::string(PT_SOURCE_DIR) + "/autograder/header_probe.cpp");
   ASSERT_TRUE(in) << "autograder/header_probe.cpp not found";
   std::set<std::string> included;
   const std::regex include(R"(^#include <([^>]+)>)");

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "handout_index.h"
+#include "pt_source_dir.h"
 
 namespace pt::grade {
 namespace {
@@ -28,7 +29,7 @@ std::string text_of(const fs::path& p) {
 std::set<std::string> task_ids() {
   std::set<std::string> ids;
   const std::regex tag(R"(TODO\((P[0-9]+T[0-9]+)\))");
-  for (const auto& e : fs::directory_iterator(fs::path(PT_CHECKOUT) / "tasks")) {
+  for (const auto& e : fs::directory_iterator(fs::path(PT_SOURCE_DIR) / "tasks")) {
     const std::string text = text_of(e.path());
     for (std::sregex_iterator it(text.begin(), text.end(), tag), end; it != end; ++it) ids.insert((*it)[1].str());
   }
@@ -36,7 +37,7 @@ std::set<std::string> task_ids() {
 }
 
 TEST(HandoutIndex, EveryTaskHasASectionLabelledByItsHeading) {
-  const HandoutIndex index = index_handouts((fs::path(PT_CHECKOUT) / "handouts").string());
+  const HandoutIndex index = index_handouts((fs::path(PT_SOURCE_DIR) / "handouts").string());
   const std::set<std::string> ids = task_ids();
   ASSERT_GE(ids.size(), 16u) << "tasks/ should tag every task TODO(PnTm)";
   for (const std::string& id : ids) {
@@ -47,7 +48,7 @@ TEST(HandoutIndex, EveryTaskHasASectionLabelledByItsHeading) {
     EXPECT_EQ(ref.section.find("TODO"), std::string::npos) << id << ": label \"" << ref.section << "\"";
     EXPECT_EQ(ref.section.find('`'), std::string::npos) << id << ": label \"" << ref.section << "\"";
     // The label is a heading of that handout, as written there (less a tag's markup).
-    const std::string handout = text_of(fs::path(PT_CHECKOUT) / ref.file);
+    const std::string handout = text_of(fs::path(PT_SOURCE_DIR) / ref.file);
     const std::string heading_start = "\n## " + ref.section.substr(0, ref.section.find(' ') + 1);
     EXPECT_NE(handout.find(heading_start), std::string::npos) << id << ": \"" << ref.section << "\" is not a heading";
   }
