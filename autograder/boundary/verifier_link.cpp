@@ -160,7 +160,11 @@ SceneRef refer_to(const Scene& scene) {
     definition.put(id + 1);
     put_scene(definition, scene, new_index);
     sent = nullptr;  // the worker's scene is unknown until it answers
-    call_worker(Call::DefineScene, definition);
+    const std::string answer = call_worker(Call::DefineScene, definition);
+    read_answer([&] {
+      Reader(answer).finish();  // nothing comes back
+      return 0;
+    });
     index = std::move(new_index);
     sent = &scene;
     sent_revision = scene.revision();
