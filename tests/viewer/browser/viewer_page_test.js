@@ -30,6 +30,18 @@ try {
 
 const TIMEOUT = 60000;
 let failures = 0, passes = 0;
+// What the page draws or writes after the state a wait saw (the next frame,
+// the next status line) is read again, every 100 ms for up to 5 s, until it
+// holds: a loaded machine is slow, not wrong.
+async function eventually(read, holds) {
+  let value = await read();
+  for (let i = 0; i < 50 && !holds(value); ++i) {
+    await new Promise((r) => setTimeout(r, 100));
+    value = await read();
+  }
+  return value;
+}
+
 function check(ok, what) {
   console.log((ok ? 'ok   ' : 'FAIL ') + what);
   ok ? ++passes : ++failures;
@@ -91,9 +103,10 @@ async function main() {
     // 1. The progressive render reaches 8 spp and shows an image.
     await page.waitForFunction(() => window.viewer.status && window.viewer.status.spp >= 8 &&
       window.viewer.shownVersion === window.viewer.status.version, { timeout: TIMEOUT });
-    let facts = await canvasFacts(page);
+    let facts = await eventually(() => canvasFacts(page), (f) => f.distinct > f.pixels / 2);
     check(facts.distinct > facts.pixels / 2, `render shown, not blank (${facts.distinct} of ${facts.pixels} pixels differ from the first)`);
-    const status = await page.$eval('#status', (e) => e.textContent);
+    const status = await eventually(() => page.$eval('#status', (e) => e.textContent),
+      (t) => /8\.0\/8 spp/.test(t) && /Mrays\/s/.test(t));
     check(/8\.0\/8 spp/.test(status) && /Mrays\/s/.test(status), 'status line shows spp and rays/s: ' + status);
     await shot(page, '1_render');
     const rendered = facts.hash;
@@ -108,7 +121,7 @@ async function main() {
     await page.waitForFunction((b) => JSON.stringify(window.viewer.status.camera) !== b[0] &&
       window.viewer.status.generation > b[1] && window.viewer.status.state === 'done' && window.viewer.shownVersion === window.viewer.status.version,
     { timeout: TIMEOUT }, before);
-    facts = await canvasFacts(page);
+    facts = await eventually(() => canvasFacts(page), (f) => f.hash !== rendered && f.distinct > f.pixels / 2);
     check(facts.hash !== rendered && facts.distinct > facts.pixels / 2, 'camera drag: the view changed and the image is not blank');
     await shot(page, '2_orbit');
 
@@ -119,9 +132,10 @@ async function main() {
     await page.waitForFunction(() => window.viewer.bvh.path === 'l', { timeout: TIMEOUT });
     await page.click('#bvh-left');
     await page.waitForFunction(() => window.viewer.bvh.path === 'll', { timeout: TIMEOUT });
-    const info = await page.$eval('#bvh-info', (e) => e.textContent);
+    const info = await eventually(() => page.$eval('#bvh-info', (e) => e.textContent),
+      (t) => /depth 2/.test(t) && /SAH/.test(t));
     check(/depth 2/.test(info) && /SAH/.test(info), 'BVH walk two levels down: ' + info);
-    facts = await canvasFacts(page);
+    facts = await eventually(() => canvasFacts(page), (f) => f.blue > 20);
     check(facts.blue > 20, `the node's box is drawn over the image (${facts.blue} box-coloured pixels)`);
     await shot(page, '3_bvh');
 
@@ -129,10 +143,11 @@ async function main() {
     await page.click('input[value=inspect]');
     await page.mouse.click(box.x + box.width / 2, box.y + box.height * 0.6);
     await page.waitForFunction(() => window.viewer.path !== null && window.viewer.path.vertices, { timeout: TIMEOUT });
+    const text = await eventually(() => page.$eval('#pixel-info', (e) => e.textContent),
+      (t) => /(sphere|triangle) #\d+/.test(t) && /8 samples/.test(t));
     const rows = await page.$$eval('#pixel-info tr', (r) => r.length - 1);
-    const text = await page.$eval('#pixel-info', (e) => e.textContent);
     check(rows >= 1 && /(sphere|triangle) #\d+/.test(text) && /8 samples/.test(text), `pixel path read: ${rows} vertices`);
-    facts = await canvasFacts(page);
+    facts = await eventually(() => canvasFacts(page), (f) => f.magenta > 5);
     check(facts.magenta > 5, `the path is drawn over the image (${facts.magenta} path-coloured pixels)`);
     await shot(page, '4_inspector');
 
@@ -140,7 +155,7 @@ async function main() {
     await page.click('#flip');
     await page.waitForFunction(() => window.viewer.show === 'reference' && window.viewer.shownVersion === -2 &&
       window.viewer.image && window.viewer.image.width === 256, { timeout: TIMEOUT });
-    facts = await canvasFacts(page);
+    facts = await eventually(() => canvasFacts(page), (f) => f.distinct > f.pixels / 2);
     check(facts.distinct > facts.pixels / 2, 'reference shown (256x192), not blank');
     await shot(page, '5_reference');
 
