@@ -3,13 +3,15 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <new>
 
 #include "core/not_implemented.h"
 
 namespace pt::boundary {
 namespace {
 
-constexpr size_t kHeader = 7;  // u32 length, u8 kind, u16 call
+constexpr size_t kHeader = 11;  // u32 length, u8 kind, u16 call, u32 tag
 const std::string kNotImplementedPrefix = "not implemented: ";
 
 }  // namespace
@@ -30,6 +32,25 @@ void Reader::need(size_t n) const {
 void Reader::finish() const {
   if (at_ != bytes_.size()) throw LinkBroken("a message longer than its call's values");
 }
+
+namespace {
+
+// A seed the worker's code cannot predict: the system's entropy or, where a
+// sandbox leaves none (no getrandom, no /dev/urandom), the clock and this
+// process's randomised addresses.
+uint32_t unpredictable_seed() {
+  try {
+    return std::random_device()();
+  } catch (const std::exception&) {
+    const auto now = static_cast<uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+    const auto here = reinterpret_cast<uintptr_t>(&now) ^ reinterpret_cast<uintptr_t>(&unpredictable_seed);
+    return static_cast<uint32_t>(now ^ (now >> 32) ^ here ^ (here >> 32));
+  }
+}
+
+}  // namespace
+
+Link::Link(int in_fd, int out_fd) : in_(in_fd), out_(out_fd), tags_(unpredictable_seed()) {}
 
 void Link::on(Call call, Handler handler) {
   const size_t i = static_cast<size_t>(call);
@@ -62,6 +83,7 @@ bool Link::receive(Message& m) {
   std::memcpy(&length, buffer_.data() + start_, 4);
   const uint8_t kind = static_cast<uint8_t>(buffer_[start_ + 4]);
   std::memcpy(&m.call, buffer_.data() + start_ + 5, 2);
+  std::memcpy(&m.tag, buffer_.data() + start_ + 7, 4);
   if (length > kMaxPayload) throw LinkBroken("a message of " + std::to_string(length) + " bytes");
   if (kind < 1 || kind > 3) throw LinkBroken("a message of unknown kind " + std::to_string(kind));
   m.kind = static_cast<Kind>(kind);
@@ -71,12 +93,13 @@ bool Link::receive(Message& m) {
   return true;
 }
 
-void Link::send(Kind kind, uint16_t call, const std::string& payload) {
+void Link::send(Kind kind, uint16_t call, uint32_t tag, const std::string& payload) {
   std::string bytes(kHeader, '\0');
   const uint32_t length = static_cast<uint32_t>(payload.size());
   std::memcpy(bytes.data(), &length, 4);
   bytes[4] = static_cast<char>(kind);
   std::memcpy(bytes.data() + 5, &call, 2);
+  std::memcpy(bytes.data() + 7, &tag, 4);
   bytes += payload;
   for (size_t done = 0; done < bytes.size();) {
     const ssize_t n = ::write(out_, bytes.data() + done, bytes.size() - done);
@@ -102,6 +125,9 @@ void Link::handle(const Message& m) {
   } catch (const NotImplemented& e) {
     kind = Kind::Throw;
     thrown.put(Thrown::NotImplemented).put_string(e.what());
+  } catch (const std::bad_alloc& e) {
+    kind = Kind::Throw;
+    thrown.put(Thrown::OutOfMemory).put_string(e.what());
   } catch (const std::exception& e) {
     kind = Kind::Throw;
     thrown.put(Thrown::Error).put_string(e.what());
@@ -109,11 +135,12 @@ void Link::handle(const Message& m) {
     kind = Kind::Throw;
     thrown.put(Thrown::Error).put_string("an exception that is not a std::exception");
   }
-  send(kind, m.call, kind == Kind::Return ? result.bytes() : thrown.bytes());
+  send(kind, m.call, m.tag, kind == Kind::Return ? result.bytes() : thrown.bytes());
 }
 
 std::string Link::call(Call call, const Writer& args) {
-  send(Kind::Request, static_cast<uint16_t>(call), args.bytes());
+  const uint32_t tag = static_cast<uint32_t>(tags_());
+  send(Kind::Request, static_cast<uint16_t>(call), tag, args.bytes());
   for (Message m;;) {
     if (!receive(m)) throw LinkClosed("the other side closed the link before answering");
     if (m.kind == Kind::Request) {
@@ -121,6 +148,7 @@ std::string Link::call(Call call, const Writer& args) {
       continue;
     }
     if (m.call != static_cast<uint16_t>(call)) throw LinkBroken("an answer to a call that was not made");
+    if (m.tag != tag) throw LinkBroken("an answer that is not this call's (its tag is another's: forged, or stale)");
     if (m.kind == Kind::Return) return std::move(m.payload);
     Reader r(m.payload);
     const auto what = r.get<Thrown>();
@@ -130,16 +158,17 @@ std::string Link::call(Call call, const Writer& args) {
       if (text.rfind(kNotImplementedPrefix, 0) == 0) text.erase(0, kNotImplementedPrefix.size());
       throw NotImplemented(text);
     }
+    if (what == Thrown::OutOfMemory) throw std::bad_alloc();
     throw std::runtime_error(text);
   }
 }
 
-void Link::hello() { send(Kind::Return, 0, ""); }
+void Link::hello() { send(Kind::Return, 0, 0, ""); }
 
 void Link::await_hello() {
   Message m;
   if (!receive(m)) throw LinkClosed("the worker ended before its main started");
-  if (m.kind != Kind::Return || m.call != 0 || !m.payload.empty()) throw LinkBroken("the worker did not say hello");
+  if (m.kind != Kind::Return || m.call != 0 || m.tag != 0 || !m.payload.empty()) throw LinkBroken("the worker did not say hello");
 }
 
 void Link::serve() {

@@ -8,7 +8,13 @@
 // student's code there calls back a function that only the verifier has (a
 // test's scripted radiance, Part 5's next_sample); that may call a task
 // function again, and so on. A message is
-//   u32 payload length | u8 kind | u16 call | payload
+//   u32 payload length | u8 kind | u16 call | u32 tag | payload
+// where a request's tag is drawn at random and its answer repeats it. The
+// worker's student code can write on the link too: an answer it forges
+// before the worker's own is then either the wrong tag (it cannot know the
+// tag without reading the worker's memory) or, right or wrong, followed by the
+// worker's real answer, which the verifier's next call reads as a stale one.
+// Either breaks the link.
 // and a payload is the call's values, copied as bytes where both ends are the
 // same build (glm vectors, Ray, Camera, RenderSettings, Rng).
 //
@@ -18,6 +24,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -35,6 +42,11 @@ enum class Call : uint16_t {
   SphereTest,
   SphereHas,
   SphereIntersect,
+  // Part 2: a BVH's primitives cross once, when it is built; traversals name it
+  BuildBvh = 10,
+  BoxIntersect,
+  BvhIntersect,
+  BvhHasIntersection,
   // Scenes (parts 3 and 4): one crosses once, then calls name it
   DefineScene = 20,
   // Part 3
@@ -136,18 +148,19 @@ class Reader {
 
 // What a call answers: a value, or an exception to throw on the caller's side.
 enum class Kind : uint8_t { Request = 1, Return = 2, Throw = 3 };
-enum class Thrown : uint8_t { Error = 0, NotImplemented = 1 };
+enum class Thrown : uint8_t { Error = 0, NotImplemented = 1, OutOfMemory = 2 };
 
 using Handler = std::function<void(Reader& args, Writer& result)>;
 
 class Link {
  public:
-  Link(int in_fd, int out_fd) : in_(in_fd), out_(out_fd) {}
+  Link(int in_fd, int out_fd);
 
   void on(Call call, Handler handler);
   // Calls the peer and returns its answer's payload; serves the peer's calls
   // while it waits. An exception the peer's side threw is thrown here again
-  // (pt::NotImplemented as itself, the rest as std::runtime_error).
+  // (pt::NotImplemented and std::bad_alloc as themselves, the rest as
+  // std::runtime_error).
   std::string call(Call call, const Writer& args);
   // Serves calls until the peer closes its end (the worker's main loop).
   void serve();
@@ -160,15 +173,17 @@ class Link {
   struct Message {
     Kind kind;
     uint16_t call;
+    uint32_t tag;
     std::string payload;
   };
   bool receive(Message& m);  // false at a clean end of the stream
-  void send(Kind kind, uint16_t call, const std::string& payload);
+  void send(Kind kind, uint16_t call, uint32_t tag, const std::string& payload);
   void handle(const Message& m);
   bool fill(size_t n);  // false at the end of the stream
 
   int in_, out_;
   std::vector<Handler> handlers_;
+  std::mt19937 tags_;
   std::string buffer_;
   size_t start_ = 0;
 };

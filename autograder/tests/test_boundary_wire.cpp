@@ -37,11 +37,12 @@ struct PipePair {
 };
 
 // Raw bytes as a hostile peer would write them: header, then payload.
-std::string message(uint32_t length, uint8_t kind, uint16_t call, const std::string& payload) {
-  std::string bytes(7, '\0');
+std::string message(uint32_t length, uint8_t kind, uint16_t call, const std::string& payload, uint32_t tag = 0) {
+  std::string bytes(11, '\0');
   std::memcpy(bytes.data(), &length, 4);
   bytes[4] = static_cast<char>(kind);
   std::memcpy(bytes.data() + 5, &call, 2);
+  std::memcpy(bytes.data() + 7, &tag, 4);
   return bytes + payload;
 }
 
@@ -80,6 +81,9 @@ TEST(BoundaryWire, ExceptionsCrossWithTheirKind) {
   worker.on(Call::GenerateRay, [](Reader&, Writer&) -> void { throw NotImplemented("P1T1 Camera::generate_ray"); });
   worker.on(Call::SphereTest, [](Reader&, Writer&) -> void { throw std::out_of_range("vector::at"); });
   worker.on(Call::SphereHas, [](Reader&, Writer&) -> void { throw 42; });
+  // A build that runs out of the address space it was given (Part 2's hidden
+  // test catches std::bad_alloc by name).
+  worker.on(Call::BuildBvh, [](Reader&, Writer&) -> void { throw std::bad_alloc(); });
   std::thread serving([&worker] { worker.serve(); });
   try {
     verifier.call(Call::GenerateRay, Writer());
@@ -94,6 +98,7 @@ TEST(BoundaryWire, ExceptionsCrossWithTheirKind) {
       },
       std::runtime_error);
   EXPECT_THROW(verifier.call(Call::SphereHas, Writer()), std::runtime_error);
+  EXPECT_THROW(verifier.call(Call::BuildBvh, Writer()), std::bad_alloc);
   ::close(p.a_out);
   p.a_out = -1;
   serving.join();
@@ -114,6 +119,7 @@ TEST(BoundaryWire, MalformedAnswersBreakTheLink) {
       {"a length past the limit", message(kMaxPayload + 1, 2, call, ""), false},
       {"an unknown kind", message(0, 9, call, ""), false},
       {"an answer to a call not made", message(0, 2, call + 1, ""), false},
+      {"an answer with another call's tag", message(0, 2, call, "", 0x5eed), false},
       {"a thrown answer too short for its text", message(3, 3, call, std::string("\0\xff\xff", 3)), false},
       {"the stream ending inside a header", std::string("\x10\0\0", 3), true},
       {"the stream ending inside a payload", message(16, 2, call, "12345678"), true},
@@ -132,6 +138,35 @@ TEST(BoundaryWire, MalformedAnswersBreakTheLink) {
       EXPECT_FALSE(c.closed) << c.what << ": not taken for the end of the stream";
     }
   }
+}
+
+// The worker's student code writes on the link an answer of its own making
+// before the worker's real one. Even one that guessed the request's tag (here
+// it is read off the wire, as only a read of the worker's memory could) is
+// followed by the real answer, which the next call meets as a stale one.
+TEST(BoundaryWire, AForgedAnswerBreaksTheLinkByTheNextCall) {
+  PipePair p;
+  Link verifier(p.a_in, p.a_out);
+  std::thread worker([&p] {
+    for (int i = 0; i < 2; ++i) {
+      char header[11];
+      if (::read(p.b_in, header, sizeof header) != ssize_t(sizeof header)) return;  // the request (no payload)
+      uint16_t call;
+      uint32_t tag;
+      std::memcpy(&call, header + 5, 2);
+      std::memcpy(&tag, header + 7, 4);
+      Writer forged, real;
+      forged.put(1.0);
+      real.put(2.0);
+      const std::string both = message(8, 2, call, forged.bytes(), tag) + message(8, 2, call, real.bytes(), tag);
+      if (::write(p.b_out, both.data(), both.size()) != ssize_t(both.size())) return;
+    }
+  });
+  const std::string first = verifier.call(Call::NextSample, Writer());
+  EXPECT_EQ(Reader(first).get<double>(), 1.0) << "the forged answer had the right tag and came first";
+  EXPECT_THROW(verifier.call(Call::NextSample, Writer()), LinkBroken) << "the real answer to the first call, stale";
+  p.close_b();
+  worker.join();
 }
 
 TEST(BoundaryWire, AnAnswerIsReadExactlyToItsEnd) {
