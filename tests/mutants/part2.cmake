@@ -80,6 +80,19 @@ pt_mutant(2 fallback_peels_one ${p2} [[      mid = begin + (end - begin) / 2;]] 
 pt_mutant(2 leaf_size_zero_recurses ${p2} [[max_leaf_size_(std::max<size_t>(1, max_leaf_size))]]
           [[max_leaf_size_(max_leaf_size)]])
 
+# The same bug once the compiler has made the endless recursion a loop: the
+# build allocates nodes without end. Across the process boundary it runs
+# under the address-space room the verifier had (autograder/boundary/
+# bvh_codec.h), so the hidden test's 256 MiB stops it with std::bad_alloc.
+# Caught by BVHDegenerate.LeafSizeZeroMeansOne (hidden; "ran out of 256 MiB").
+pt_mutant(2 leaf_size_zero_allocates ${p2} [[  auto root = std::make_unique<BVHNode>();
+  Builder(prims]] [[  if (max_leaf_size == 0) {
+    std::vector<std::unique_ptr<BVHNode>> halves;
+    for (;;) halves.push_back(std::make_unique<BVHNode>());
+  }
+  auto root = std::make_unique<BVHNode>();
+  Builder(prims]])
+
 # The classic single-axis split: the middle of the centroid box along its
 # longest axis, no cost model. Caught by BVHQuality.SahCostOnElongatedScene.
 pt_mutant(2 single_axis_midpoint ${p2} [[    Split split = best_split(begin, end, centroids);]]

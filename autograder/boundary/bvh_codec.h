@@ -1,0 +1,215 @@
+#pragma once
+// Part 2 across the boundary (README.md beside this file). A BVH's primitives
+// cross once, when its constructor calls construct_bvh: each one's box and
+// geometry. The worker builds over its copies with the student's code and
+// sends back the order the build left them in and the tree in preorder; the
+// verifier rebuilds the tree and keeps it. A traversal then names the tree
+// and a node of it, and its answer brings the log of every primitive test the
+// student's traversal made (which primitive, the ray it was given, hit or
+// not), which the verifier makes again, in order, on its own primitives: the
+// tests count work where they run, and an answer that does not match what the
+// verifier's own primitive says is a lie that breaks the link.
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "geometry/bvh.h"
+#include "wire.h"
+
+namespace pt::boundary::bvh {
+
+// A primitive named in an answer: its index in the order the verifier sent
+// them, or one of these.
+constexpr int64_t kNoPrimitive = -1;  // a null pointer
+constexpr int64_t kElsewhere = -2;    // not one of the primitives sent
+
+enum class Shape : uint8_t { Triangle = 1, Sphere = 2 };
+
+// Neither end hears when a BVHAccel is freed (its destructor is the
+// framework's): both keep the trees built last. A test holds a few at a time.
+constexpr size_t kTreesKept = 16;
+
+// What this process maps now: both ends measure the address-space room a
+// build gets (the verifier's RLIMIT_AS minus this) with it.
+inline rlim_t mapped_bytes() {
+  unsigned long pages = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE));
+}
+
+// The verifier's side: the address space it may still map (-1: no limit).
+inline int64_t address_space_room() {
+  rlimit l{};
+  if (::getrlimit(RLIMIT_AS, &l) != 0 || l.rlim_cur == RLIM_INFINITY) return -1;
+  const rlim_t mapped = mapped_bytes();
+  return l.rlim_cur > mapped ? static_cast<int64_t>(l.rlim_cur - mapped) : 0;
+}
+
+// The worker's side: for the life of the object, at most `room` more bytes of
+// address space than it maps now (no change for a negative room).
+class AddressSpaceRoom {
+ public:
+  explicit AddressSpaceRoom(int64_t room) {
+    if (room < 0 || ::getrlimit(RLIMIT_AS, &old_) != 0) return;
+    rlimit l = old_;
+    l.rlim_cur = std::min(old_.rlim_cur, mapped_bytes() + static_cast<rlim_t>(room));
+    set_ = ::setrlimit(RLIMIT_AS, &l) == 0;
+  }
+  ~AddressSpaceRoom() {
+    if (set_) ::setrlimit(RLIMIT_AS, &old_);
+  }
+  AddressSpaceRoom(const AddressSpaceRoom&) = delete;
+  AddressSpaceRoom& operator=(const AddressSpaceRoom&) = delete;
+
+ private:
+  rlimit old_{};
+  bool set_ = false;
+};
+
+// A tree in preorder: each node's box, range, and which of its children
+// follow (left's subtree first). A valid tree over n primitives has 2n - 1
+// nodes at most (the tests' largest scene: 21,000 primitives) and a useful one
+// is shallow (the tests bound depth at 64; peeling one primitive a level over
+// 21,000 goes 21,000 deep); the wire carries no more than these, so that a
+// tree no honest build makes (a cycle, a chain of empty nodes) neither fills
+// the link nor overflows the verifier's stack when it is freed.
+constexpr uint8_t kLeftFollows = 1, kRightFollows = 2;
+constexpr uint64_t kMaxNodes = uint64_t(1) << 20;
+constexpr uint64_t kMaxDepth = uint64_t(1) << 16;
+
+// The worker's side: fills `preorder` with the nodes in the order written.
+inline void put_tree(Writer& out, const BVHNode* root, std::vector<const BVHNode*>& preorder) {
+  preorder.clear();
+  struct Item {
+    const BVHNode* node;
+    uint64_t depth;
+  };
+  std::vector<Item> stack;
+  if (root) stack.push_back({root, 0});
+  Writer nodes;
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    if (preorder.size() >= kMaxNodes)
+      throw std::runtime_error("construct_bvh made a tree of more than " + std::to_string(kMaxNodes) +
+                               " nodes (a valid tree over n primitives has at most 2n - 1); the process boundary "
+                               "carries no larger tree");
+    if (item.depth > kMaxDepth)
+      throw std::runtime_error("construct_bvh made a tree more than " + std::to_string(kMaxDepth) +
+                               " levels deep; the process boundary carries no deeper tree");
+    const BVHNode& n = *item.node;
+    preorder.push_back(&n);
+    const BBox box = n.bb;
+    const uint8_t follows = (n.l ? kLeftFollows : 0) | (n.r ? kRightFollows : 0);
+    nodes.put(box).put(static_cast<uint64_t>(n.start)).put(static_cast<uint64_t>(n.end)).put(follows);
+    if (n.r) stack.push_back({n.r.get(), item.depth + 1});
+    if (n.l) stack.push_back({n.l.get(), item.depth + 1});
+  }
+  out.put(static_cast<uint64_t>(preorder.size())).put_bytes(nodes.bytes());
+}
+
+// The verifier's side, without recursion: `preorder` gets the rebuilt nodes
+// in the order read, so that a node crosses as its position there.
+inline std::unique_ptr<BVHNode> get_tree(Reader& in, std::vector<const BVHNode*>& preorder) {
+  preorder.clear();
+  const auto count = in.get<uint64_t>();
+  if (count > kMaxNodes) throw LinkBroken("a tree of more nodes than the link carries");
+  std::unique_ptr<BVHNode> root;
+  if (count == 0) return root;
+  struct Slot {
+    std::unique_ptr<BVHNode>* place;
+    uint64_t depth;
+  };
+  std::vector<Slot> slots{{&root, 0}};
+  for (uint64_t i = 0; i < count; ++i) {
+    if (slots.empty()) throw LinkBroken("a tree whose nodes go on after its last one");
+    const Slot slot = slots.back();
+    slots.pop_back();
+    if (slot.depth > kMaxDepth) throw LinkBroken("a tree deeper than the link carries");
+    *slot.place = std::make_unique<BVHNode>();
+    BVHNode& n = **slot.place;
+    n.bb = in.get<BBox>();
+    n.start = static_cast<size_t>(in.get<uint64_t>());
+    n.end = static_cast<size_t>(in.get<uint64_t>());
+    const auto follows = in.get<uint8_t>();
+    if (follows & ~(kLeftFollows | kRightFollows)) throw LinkBroken("a tree node with children of no kind");
+    preorder.push_back(&n);
+    if (follows & kRightFollows) slots.push_back({&n.r, slot.depth + 1});
+    if (follows & kLeftFollows) slots.push_back({&n.l, slot.depth + 1});
+  }
+  if (!slots.empty()) throw LinkBroken("a tree that ends before its last node");
+  return root;
+}
+
+// One primitive test of a traversal, as the worker's copy of the primitive saw it.
+struct PrimitiveTest {
+  uint32_t index;  // in the order sent
+  bool closest;    // intersect() rather than has_intersection()
+  bool hit;
+  Ray ray;  // as it was passed in
+};
+
+// A log on the wire: a ray is written only where it differs from the test
+// before (most tests of a query see the same ray, or the same with max_t
+// shrunk at a hit), so that a traversal that tests thousands of primitives
+// per ray costs a few bytes a test.
+constexpr uint8_t kClosest = 1, kHit = 2, kNewRay = 4;
+
+inline bool same_ray(const Ray& a, const Ray& b) {
+  return a.o == b.o && a.d == b.d && a.min_t == b.min_t && a.max_t == b.max_t && a.depth == b.depth;
+}
+
+inline void put_ray(Writer& out, const Ray& r) {
+  out.put(r.o).put(r.d).put(r.min_t).put(r.max_t).put(static_cast<int32_t>(r.depth));
+}
+
+inline Ray get_ray(Reader& in) {
+  Ray r;
+  in.get(r.o);
+  in.get(r.d);
+  in.get(r.min_t);
+  in.get(r.max_t);
+  r.depth = in.get<int32_t>();
+  return r;
+}
+
+inline void put_tests(Writer& out, const std::vector<PrimitiveTest>& tests) {
+  out.put(static_cast<uint64_t>(tests.size()));
+  const Ray* last = nullptr;
+  for (const PrimitiveTest& t : tests) {
+    const bool new_ray = !last || !same_ray(*last, t.ray);
+    out.put(static_cast<uint8_t>((t.closest ? kClosest : 0) | (t.hit ? kHit : 0) | (new_ray ? kNewRay : 0)));
+    out.put(t.index);
+    if (new_ray) put_ray(out, t.ray);
+    last = &t.ray;
+  }
+}
+
+// Calls `each(const PrimitiveTest&)` for every test in the log, in order.
+template <class Each>
+void get_tests(Reader& in, Each&& each) {
+  const auto count = in.get<uint64_t>();
+  if (count > kMaxPayload / 5) throw LinkBroken("a log of more tests than its message holds");
+  PrimitiveTest t{};
+  for (uint64_t i = 0; i < count; ++i) {
+    const auto flags = in.get<uint8_t>();
+    if (flags & ~(kClosest | kHit | kNewRay)) throw LinkBroken("a primitive test of no kind");
+    if (i == 0 && !(flags & kNewRay)) throw LinkBroken("a log whose first test names no ray");
+    t.closest = flags & kClosest;
+    t.hit = flags & kHit;
+    in.get(t.index);
+    if (flags & kNewRay) t.ray = get_ray(in);
+    each(t);
+  }
+}
+
+}  // namespace pt::boundary::bvh
