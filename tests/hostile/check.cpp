@@ -14,13 +14,14 @@
 //
 // Honest means: the grader survived; every graded test is listed with the
 // manifest's points (the maximum never shrinks); the tests of the case's
-// lost_tasks scored 0 with a message matching its failure pattern (and the
-// layer that stopped it, "stopped_at") and every other test of a submitted
-// part scored full marks; the total is their sum; the file does not change
-// after the grader has finished; no line of the solution or of a hidden test
-// that the submission does not itself hold appears in it; and no process of
-// the run is left. Exit status 0 honest, 1 not, 77 skipped (a sandbox layer
-// the case needs is missing here), 2 could not check.
+// lost_tasks (and its lost_tests, single tests) scored 0 with a message
+// matching its failure pattern (and the layer that stopped it, "stopped_at")
+// and every other test of a submitted part scored full marks; the total is
+// their sum; the file does not change after the grader has finished; no line
+// of the solution or of a hidden test that the submission does not itself
+// hold appears in it; and no process of the run is left. Exit status 0
+// honest, 1 not, 77 skipped (a sandbox layer the case needs is missing here),
+// 2 could not check.
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -412,6 +413,8 @@ int main(int argc, char** argv) {
   const std::string stopped_at = expect.value("stopped_at", "run");
   std::set<std::string> lost;
   for (const auto& task : expect.value("lost_tasks", json::array())) lost.insert(task.get<std::string>());
+  std::set<std::string> lost_tests;  // single tests, where an attack loses part of a task
+  for (const auto& test : expect.value("lost_tests", json::array())) lost_tests.insert(test.get<std::string>());
   if (stopped_at != "run" && !expect.contains("lost_tasks"))  // the whole part, by default
     for (const auto& m : manifest["parts"][std::to_string(part)]) lost.insert(m.at("task").get<std::string>());
   // Messages are several lines: [\s\S] matches any character in them.
@@ -445,7 +448,7 @@ int main(int argc, char** argv) {
       if (!submitted.count(p)) {
         c.expect(score == 0 && std::regex_search(output, not_submitted),
                  name + " (part " + n + ", not submitted) scored " + std::to_string(score) + ": " + output.substr(0, 200));
-      } else if (lost.count(task)) {
+      } else if (lost.count(task) || lost_tests.count(name)) {
         c.expect(score == 0, name + " (" + task + ") scored " + std::to_string(score));
         c.expect(std::regex_search(output, failure),
                  name + ": its message does not match /" + expect.value("failure", "") + "/: " + output.substr(0, 300));

@@ -1,0 +1,49 @@
+// Hostile: across the process boundary each traversal's answer carries the
+// log of the primitive tests it made, and the tests count work from that log
+// (autograder/boundary/bvh_codec.h). Before the solution's traversal answers,
+// this one writes on the worker's link (descriptor 3) an answer of its own:
+// a hit at t = 1 on primitive 0 with an empty log, no work at all. The format
+// is public (the release ships the grader's source); the request's tag is
+// not, and it guesses 0. The verifier reads an answer whose tag is not its
+// call's, or, had the guess been right, the real answer as a stale one at its
+// next call: the link breaks, and each test that asks for a closest hit costs
+// only itself.
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "core/vec.h"
+
+// <unistd.h> is not allowed in the grading kit: write() declared here.
+extern "C" long write(int fd, const void* bytes, unsigned long n);
+
+namespace {
+template <class T>
+void put(std::string& s, const T& v) {
+  s.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+void forge_closest_hit() {
+  std::string payload;
+  put(payload, uint8_t(1));                    // hit
+  put(payload, 0.0);                           // min_t
+  put(payload, 1.0);                           // max_t
+  put(payload, 1.0);                           // t
+  put(payload, pt::Vec3(0, 0, 1));             // n
+  put(payload, pt::Vec3(1.0 / 3));             // barycentric
+  put(payload, int64_t(0));                    // primitive 0
+  put(payload, uint8_t(0));                    // no BSDF
+  put(payload, uint64_t(0));                   // node visits
+  put(payload, uint64_t(0));                   // an empty log
+  std::string message(11, '\0');
+  const uint32_t length = static_cast<uint32_t>(payload.size());
+  const uint16_t call = 12;                    // BvhIntersect
+  const uint32_t tag = 0;                      // a guess
+  std::memcpy(&message[0], &length, 4);
+  message[4] = 2;                              // an answer
+  std::memcpy(&message[5], &call, 2);
+  std::memcpy(&message[7], &tag, 4);
+  message += payload;
+  ::write(3, message.data(), message.size());
+}
+}  // namespace

@@ -1,0 +1,32 @@
+// Hostile: the tests count a traversal's work by the primitive tests they see
+// (tests/support/bvh_checks.h), and across the process boundary the worker
+// logs them (autograder/boundary/serve_part2.cpp). This closest-hit query
+// tests every primitive, linearly, and hides the work: it casts each
+// primitive to the Triangle or Sphere it hopes lies behind it and calls that
+// class's own intersect, which no wrapper sees. The primitives it is given
+// are wrappers (the tests' counting ones, the worker's logged copies), not
+// triangles, so it finds nothing to call and says so: every test that asks
+// for a closest hit fails with that message, and no hidden work is credited.
+#include <stdexcept>
+#include <vector>
+
+#include "geometry/intersection.h"
+#include "geometry/primitive.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+
+namespace {
+bool unseen_closest(const std::vector<pt::Primitive*>& prims, const pt::Ray& r, pt::Intersection* isect) {
+  bool hit = false;
+  for (const pt::Primitive* p : prims) {
+    if (const auto* t = dynamic_cast<const pt::Triangle*>(p)) {
+      hit = t->pt::Triangle::intersect(r, isect) || hit;
+    } else if (const auto* s = dynamic_cast<const pt::Sphere*>(p)) {
+      hit = s->pt::Sphere::intersect(r, isect) || hit;
+    } else {
+      throw std::runtime_error("unseen scan: a primitive that is no Triangle or Sphere; nothing to test unseen");
+    }
+  }
+  return hit;
+}
+}  // namespace
