@@ -16,8 +16,9 @@
 //     list of the files it read is checked against the task file, the
 //     framework's headers and what the kit's header probe read (the
 //     standard library and GLM: dependency_check.h);
-//  5. grade each part's binary, hidden tests included, in the sandbox
-//     (grade_part.h), rewriting results.json as each part finishes;
+//  5. grade each part, hidden tests included, in the sandbox: the kit's
+//     verifier beside the part's worker (boundary/README.md; grade_part.h),
+//     rewriting results.json as each part finishes;
 //  6. render the scene library with the student's working parts (report.html).
 //
 // Time: each part's build and each part's grading have their own limit, and

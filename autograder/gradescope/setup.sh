@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Gradescope's image set-up (autograder.zip's setup.sh, run once as root when
 # the image is built): installs the Debian/Ubuntu packages and builds the
-# grading kit from the course's source: the framework, the graded tests
-# (hidden ones included), the solution compiled only, the manifest, pt-grade.
+# grading kit from the course's source: the framework, the verifiers (the
+# graded tests, hidden ones included), the solution compiled only, the
+# manifest, pt-grade.
 # The solution's source stays readable by root only: graded code runs as an
 # unprivileged user and could not read it even where Landlock is missing.
 set -euo pipefail
