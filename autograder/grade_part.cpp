@@ -19,6 +19,7 @@
 #include <set>
 #include <sstream>
 
+#include "boundary/one_cpu.h"
 #include "verdicts.h"
 
 namespace pt::grade {
@@ -162,27 +163,6 @@ RunOutcome read_outcome(int fd) {
   return r;
 }
 
-// One CPU for a verifier and its worker. They take turns (each waits for the
-// other's answer), and on a virtual machine a wake-up on the other CPU costs
-// far more than the turn itself: Part 1's suite took 0.24 s on one CPU against
-// 1.3-2.0 s spread over two (measured side by side on the 2-core machine).
-// Grader processes are spread over the CPUs they may use by process id.
-std::optional<cpu_set_t> one_cpu() {
-  cpu_set_t allowed;
-  if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return std::nullopt;
-  const int count = CPU_COUNT(&allowed);
-  if (count <= 1) return std::nullopt;
-  int pick = static_cast<int>(::getpid() % count);
-  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
-    if (CPU_ISSET(cpu, &allowed) && pick-- == 0) {
-      cpu_set_t one;
-      CPU_ZERO(&one);
-      CPU_SET(cpu, &one);
-      return one;
-    }
-  return std::nullopt;
-}
-
 // One run of a verifier with its worker beside it, each in its own sandbox
 // run (its own PID namespace where there are namespaces): the worker can
 // neither see the verifier's memory nor write its verdict channel. The
@@ -203,7 +183,7 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
   // this thread's (restored after the run) for the verifier.
   cpu_set_t before;
   const bool restore = ::sched_getaffinity(0, sizeof before, &before) == 0;
-  const std::optional<cpu_set_t> cpu = one_cpu();
+  const std::optional<cpu_set_t> cpu = boundary::one_cpu();
   std::fflush(nullptr);
   const pid_t helper = ::fork();
   if (helper == 0) {

@@ -1,6 +1,7 @@
 #include "verifier_link.h"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/prctl.h>
@@ -8,6 +9,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <future>
 #include <iterator>
@@ -15,6 +17,8 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "one_cpu.h"
 
 extern char** environ;
 
@@ -45,8 +49,23 @@ std::vector<std::string> own_arguments() {
   std::_Exit(status);
 }
 
+// This process, and so the worker it starts, on one CPU (one_cpu.h): the
+// threads there are now, and those started later (the worker's spawner, a
+// renderer's pool), which inherit it.
+void share_one_cpu() {
+  const std::optional<cpu_set_t> one = one_cpu();
+  if (!one) return;
+  std::error_code error;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", error)) {
+    const pid_t tid = static_cast<pid_t>(std::atoi(task.path().filename().c_str()));
+    if (tid > 0) ::sched_setaffinity(tid, sizeof *one, &*one);
+  }
+  ::sched_setaffinity(0, sizeof *one, &*one);
+}
+
 // Starts the worker with the requests on its descriptor 4 and its answers on 3.
 void start_worker(const std::string& path, int& in, int& out) {
+  share_one_cpu();
   int requests[2], answers[2];
   if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0) worker_lost("pipe failed");
   // Above 4 first, so that placing one end at 3 or 4 never overwrites another.
