@@ -168,20 +168,6 @@ inline bool same_ray(const Ray& a, const Ray& b) {
   return a.o == b.o && a.d == b.d && a.min_t == b.min_t && a.max_t == b.max_t && a.depth == b.depth;
 }
 
-inline void put_ray(Writer& out, const Ray& r) {
-  out.put(r.o).put(r.d).put(r.min_t).put(r.max_t).put(static_cast<int32_t>(r.depth));
-}
-
-inline Ray get_ray(Reader& in) {
-  Ray r;
-  in.get(r.o);
-  in.get(r.d);
-  in.get(r.min_t);
-  in.get(r.max_t);
-  r.depth = in.get<int32_t>();
-  return r;
-}
-
 inline void put_tests(Writer& out, const std::vector<PrimitiveTest>& tests) {
   out.put(static_cast<uint64_t>(tests.size()));
   const Ray* last = nullptr;
@@ -189,7 +175,7 @@ inline void put_tests(Writer& out, const std::vector<PrimitiveTest>& tests) {
     const bool new_ray = !last || !same_ray(*last, t.ray);
     out.put(static_cast<uint8_t>((t.closest ? kClosest : 0) | (t.hit ? kHit : 0) | (new_ray ? kNewRay : 0)));
     out.put(t.index);
-    if (new_ray) put_ray(out, t.ray);
+    if (new_ray) out.put(t.ray);
     last = &t.ray;
   }
 }
@@ -207,7 +193,7 @@ void get_tests(Reader& in, Each&& each) {
     t.closest = flags & kClosest;
     t.hit = flags & kHit;
     in.get(t.index);
-    if (flags & kNewRay) t.ray = get_ray(in);
+    if (flags & kNewRay) in.get(t.ray);
     each(t);
   }
 }

@@ -131,7 +131,7 @@ bool traverse(const BVHAccel* accel, const BVHNode* root, const BVHNode* node, c
   }
   Writer in(160);
   in.put(tree.id).put(node_id);
-  bvh::put_ray(in, r);
+  in.put(r);
   const Primitive* before = isect ? isect->primitive : nullptr;
   in.put(static_cast<uint8_t>(isect != nullptr));
   if (isect) {
@@ -169,9 +169,7 @@ bool traverse(const BVHAccel* accel, const BVHNode* root, const BVHNode* node, c
 
 bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
   Writer in;
-  in.put(*this);
-  boundary::bvh::put_ray(in, r);
-  in.put(t0).put(t1);
+  in.put(*this).put(r).put(t0).put(t1);
   const std::string answer = call_worker(Call::BoxIntersect, in);
   return boundary::read_answer([&] {
     Reader out(answer);

@@ -182,7 +182,7 @@ void traverse(Reader& in, Writer& out, bool closest) {
   if (node_id < -1 || node_id >= static_cast<int64_t>(t.preorder.size()))
     throw std::runtime_error("a traversal from a node the tree does not have");
   const BVHNode* node = node_id < 0 ? nullptr : t.preorder[static_cast<size_t>(node_id)];
-  const Ray ray = bvh::get_ray(in);
+  const auto ray = in.get<Ray>();
   const bool with_hit = in.get<uint8_t>() != 0;
   if (with_hit != closest) throw std::runtime_error("a hit record for has_intersection, or none for intersect");
   Intersection hit;
@@ -213,7 +213,7 @@ void traverse(Reader& in, Writer& out, bool closest) {
 void serve_task_calls(Link& link) {
   link.on(Call::BoxIntersect, [](Reader& in, Writer& out) {
     const auto box = in.get<BBox>();
-    const Ray ray = bvh::get_ray(in);
+    const auto ray = in.get<Ray>();
     auto t0 = in.get<double>(), t1 = in.get<double>();
     const bool hit = box.intersect(ray, t0, t1);
     out.put(static_cast<uint8_t>(hit)).put(t0).put(t1);
