@@ -70,7 +70,7 @@ Ray Camera::generate_ray(double x, double y) const {
 }
 
 PixelEstimate PathTracer::raytrace_pixel(int x, int y, Rng& rng) const {
-  return boundary::ask_pixel(Call::RaytracePixel, *this, x, y, rng);
+  return boundary::ask_pixel(Call::RaytracePixel, "PathTracer::raytrace_pixel", *this, x, y, rng);
 }
 
 bool Triangle::has_intersection(const Ray& r) const {

@@ -28,7 +28,9 @@ Spectrum spectrum_from(const std::string& answer) {
 // One of the estimators, on the tracer's scene and settings.
 template <Call call>
 Spectrum estimate(const PathTracer& tracer, const Ray& r, const Intersection& isect, Rng& rng) {
-  thread_local boundary::RepeatedCall<Spectrum> runs(call);
+  thread_local boundary::RepeatedCall<Spectrum> runs(call, call == Call::DirectHemisphere ? "estimate_direct_lighting_hemisphere"
+                                                           : call == Call::DirectImportance ? "estimate_direct_lighting_importance"
+                                                                                            : "one_bounce_radiance");
   const auto link = boundary::hold_link();
   const boundary::SceneRef scene = boundary::refer_to(*tracer.scene);
   Writer args(256);
@@ -46,7 +48,7 @@ Spectrum DiffuseBSDF::f(const Vec3& wo, const Vec3& wi) const {
 }
 
 Spectrum DiffuseBSDF::sample_f(const Vec3& wo, Vec3* wi, double* pdf, Rng& rng) const {
-  thread_local boundary::RepeatedCall<BsdfSample> runs(Call::DiffuseSampleF);
+  thread_local boundary::RepeatedCall<BsdfSample> runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f");
   Writer args;
   args.put(reflectance).put(emission).put(wo);
   const BsdfSample s = boundary::read_answer([&] { return runs.next(args, rng, call_worker); });

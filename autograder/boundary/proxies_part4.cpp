@@ -35,10 +35,22 @@ bool encode_test_bsdf(Writer& w, const BSDF& b) {
 
 const bool kEncoderSet = (boundary::set_bsdf_encoder(encode_test_bsdf), true);
 
+}  // namespace
+
+namespace boundary {
+// Field by field: the struct's padding is whatever the worker left there.
+bool same_answer(const GuardedEstimate& a, const GuardedEstimate& b) {
+  return test::same_bits(a.radiance, b.radiance) && a.samples == b.samples && a.tripped == b.tripped;
+}
+}  // namespace boundary
+
+namespace {
+
 // An estimate from the worker, with the path guard's state going and coming back.
 template <Call call>
 Spectrum estimate(const PathTracer& tracer, const Ray& r, const Intersection* isect, Rng& rng) {
-  thread_local boundary::RepeatedCall<GuardedEstimate> runs(call);
+  thread_local boundary::RepeatedCall<GuardedEstimate> runs(
+      call, call == Call::AtLeastOneBounce ? "at_least_one_bounce_radiance" : "est_radiance_global_illumination");
   test::part4::PathGuard& guard = test::part4::path_guard();
   GuardedEstimate e;
   {

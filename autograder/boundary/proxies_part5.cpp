@@ -26,7 +26,7 @@ PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, in
 }
 
 PixelEstimate PathTracer::raytrace_pixel_adaptive(int x, int y, Rng& rng) const {
-  return boundary::ask_pixel(Call::RaytracePixelAdaptive, *this, x, y, rng);
+  return boundary::ask_pixel(Call::RaytracePixelAdaptive, "PathTracer::raytrace_pixel_adaptive", *this, x, y, rng);
 }
 
 std::vector<int> allocate_samples(const std::vector<PilotMoments>& pilot, long long budget) {

@@ -10,13 +10,22 @@
 // arguments, another generator) starts a new run. A run is what the tests
 // would have seen one call at a time, as long as the student's function
 // depends only on its arguments and the generator.
+//
+// That it does is checked here, not believed (support/generator_contract.h):
+// every state in a run must be the one before it moved forward, and a share
+// of the answers, drawn where the worker cannot predict them, is asked for
+// again from the same state, alone, and must come back the same. A function
+// that draws from anything else, or keeps state between calls that changes
+// its answers, fails the test that called it.
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "core/rng.h"
+#include "support/generator_contract.h"
 #include "wire.h"
 
 namespace pt::boundary {
@@ -26,34 +35,64 @@ namespace pt::boundary {
 constexpr uint32_t kLongestRun = 1u << 16;
 constexpr std::chrono::milliseconds kRunTime{20};
 
-// The verifier's side. `Answer` is a plain value (a Spectrum, a sample).
+// One answer in kReplayOneIn is replayed on average (every run of that many
+// answers or more has one): a function that is not one of its generator is
+// caught within a few dozen calls, at an eighth more round trips at most.
+constexpr uint32_t kReplayOneIn = 8;
+
+// Answers compare bit for bit; a struct with padding has a same_answer of its
+// own beside it (found by argument-dependent lookup).
+template <class Answer>
+bool same_answer(const Answer& a, const Answer& b) {
+  return test::same_bits(a, b);
+}
+
+// The verifier's side. `Answer` is a plain value (a Spectrum, a sample);
+// `task` names the function in failure messages.
 template <class Answer>
 class RepeatedCall {
  public:
-  explicit RepeatedCall(Call call) : call_(call) {}
+  // One answer in `replay_one_in` is replayed on average (0: none, for tests
+  // of the runs alone).
+  RepeatedCall(Call call, std::string task, uint32_t replay_one_in = kReplayOneIn)
+      : call_(call), task_(std::move(task)), replay_one_in_(replay_one_in), replays_(unpredictable_seed()) {}
 
   // The answer to the call with `args`, from `rng`, which it advances.
   template <class AskWorker>
   Answer next(const Writer& args, Rng& rng, AskWorker&& ask_worker) {
-    const bool same_loop = args.bytes() == args_ && same(rng, expected_);
+    const bool same_args = args.bytes() == args_;
+    if (same_args && at_ > 0 && same(rng, given_) && !same(rng, expected_)) {
+      // The last call again, from the state it was given (a test's own
+      // replay, support/replayed_draws.h): its answer again. The worker's
+      // answers are checked by the replays below. (A call that drew nothing
+      // goes on with its run: its answers must all be the same.)
+      rng = states_[at_ - 1];
+      return answers_[at_ - 1];
+    }
+    const bool same_loop = same_args && same(rng, expected_);
     if (!same_loop || at_ == answers_.size()) {
       want_ = same_loop ? std::min(2 * want_, kLongestRun) : 1;
       args_ = args.bytes();
-      Writer request;
-      request.put_bytes(args_).put(rng).put(want_);
-      const std::string answer = ask_worker(call_, request);
-      Reader out(answer);
-      const auto n = out.get<uint32_t>();
-      if (n < 1 || n > want_) throw LinkBroken("a run of " + std::to_string(n) + " answers to " + std::to_string(want_));
-      answers_.resize(n);
-      states_.resize(n);
-      for (uint32_t i = 0; i < n; ++i) {
-        out.get(answers_[i]);
-        out.get(states_[i]);
-      }
-      out.finish();
+      start_ = rng;
       at_ = 0;
+      try {
+        read_run(ask_worker(call_, request(start_, want_)), want_, answers_, states_);
+        Rng before = start_;
+        for (const Rng& after : states_) {
+          if (!test::draws_between(before, after))
+            throw test::GeneratorContractBroken(test::generator_moved_back(task_));
+          before = after;
+        }
+        maybe_replay(ask_worker);
+      } catch (...) {
+        // No run: the next call starts a new one.
+        args_.clear();
+        answers_.clear();
+        states_.clear();
+        throw;
+      }
     }
+    given_ = rng;
     rng = states_[at_];
     expected_ = rng;
     return answers_[at_++];
@@ -62,13 +101,59 @@ class RepeatedCall {
  private:
   static bool same(const Rng& a, const Rng& b) { return std::memcmp(&a, &b, sizeof(Rng)) == 0; }
 
+  Writer request(const Rng& rng, uint32_t count) const {
+    Writer w;
+    w.put_bytes(args_).put(rng).put(count);
+    return w;
+  }
+
+  static void read_run(const std::string& answer, uint32_t asked, std::vector<Answer>& answers,
+                       std::vector<Rng>& states) {
+    Reader out(answer);
+    const auto n = out.get<uint32_t>();
+    if (n < 1 || n > asked) throw LinkBroken("a run of " + std::to_string(n) + " answers to " + std::to_string(asked));
+    answers.resize(n);
+    states.resize(n);
+    for (uint32_t i = 0; i < n; ++i) {
+      out.get(answers[i]);
+      out.get(states[i]);
+    }
+    out.finish();
+  }
+
+  // Asks again, alone, for one answer of the run just received (with
+  // probability n / replay_one_in_ for a run of n), from the state it was
+  // asked from: the same answer and state must come back.
+  template <class AskWorker>
+  void maybe_replay(AskWorker& ask_worker) {
+    const auto n = static_cast<uint32_t>(answers_.size());
+    if (replay_one_in_ == 0) return;
+    if (n < replay_one_in_ && std::uniform_int_distribution<uint32_t>(0, replay_one_in_ - 1)(replays_) >= n) return;
+    const uint32_t i = std::uniform_int_distribution<uint32_t>(0, n - 1)(replays_);
+    std::vector<Answer> again;
+    std::vector<Rng> state;
+    try {
+      read_run(ask_worker(call_, request(i == 0 ? start_ : states_[i - 1], 1)), 1, again, state);
+    } catch (const LinkBroken&) {
+      throw;
+    } catch (...) {
+      // An exception where the first time there was an answer: not the same call.
+      again.clear();
+    }
+    if (again.empty() || !same_answer(again[0], answers_[i]) || !same(state[0], states_[i]))
+      throw test::GeneratorContractBroken(test::not_a_function_of_its_generator(task_));
+  }
+
   Call call_;
+  std::string task_;
+  uint32_t replay_one_in_;
+  std::mt19937 replays_;  // which answers are replayed: the worker cannot predict it
   std::string args_;
   std::vector<Answer> answers_;
   std::vector<Rng> states_;
   size_t at_ = 0;
   uint32_t want_ = 1;
-  Rng expected_;
+  Rng start_, given_, expected_;
 };
 
 // The worker's side: reads the generator and the run's length after the

@@ -63,7 +63,10 @@ auto read_answer(Read&& read) -> decltype(read()) {
 // A pixel's sampling (P1T2's raytrace_pixel, P5T1's adaptive one) in the
 // worker: the settings, camera, pixel and generator go, the estimate and the
 // generator's state come back, and the radiance of each sample is `tracer`'s.
-PixelEstimate ask_pixel(Call call, const PathTracer& tracer, int x, int y, Rng& rng);
+// The state must be the one sent moved forward, and a share of the calls is
+// replayed, their callbacks answered as the first time, and must give the same
+// answer (support/generator_contract.h); `task` names the function if not.
+PixelEstimate ask_pixel(Call call, const std::string& task, const PathTracer& tracer, int x, int y, Rng& rng);
 
 // While one lives, the worker's calls back to EstRadiance go to `tracer`
 // (its own est_radiance_global_illumination: a test's scripted one, or the

@@ -33,11 +33,8 @@ void Reader::finish() const {
   if (at_ != bytes_.size()) throw LinkBroken("a message longer than its call's values");
 }
 
-namespace {
-
-// A seed the worker's code cannot predict: the system's entropy or, where a
-// sandbox leaves none (no getrandom, no /dev/urandom), the clock and this
-// process's randomised addresses.
+// The system's entropy or, where a sandbox leaves none (no getrandom, no
+// /dev/urandom), the clock and this process's randomised addresses.
 uint32_t unpredictable_seed() {
   try {
     return std::random_device()();
@@ -47,8 +44,6 @@ uint32_t unpredictable_seed() {
     return static_cast<uint32_t>(now ^ (now >> 32) ^ here ^ (here >> 32));
   }
 }
-
-}  // namespace
 
 Link::Link(int in_fd, int out_fd) : in_(in_fd), out_(out_fd), tags_(unpredictable_seed()) {}
 

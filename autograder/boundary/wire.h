@@ -70,6 +70,9 @@ enum class Call : uint16_t {
 
 constexpr uint32_t kMaxPayload = 64u << 20;
 
+// A seed the worker's code cannot predict (request tags, which calls are replayed).
+uint32_t unpredictable_seed();
+
 // The link is unusable: the peer ended, or sent what no honest peer sends.
 struct LinkBroken : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -2,10 +2,14 @@
 // a test receives from a run are those it would have received one call at a
 // time, a run is only used while the test repeats the same call from the state
 // the last answer left, and a worker that answers more than it was asked
-// breaks the link.
+// breaks the link. What the runs check of the answers: every state moves
+// forward, and a replayed answer is the same (support/generator_contract.h).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -27,6 +31,7 @@ struct FakeWorker {
   std::vector<uint32_t> asked;  // length of each run asked for
   const Rng* throw_from = nullptr;  // the generator's state at which the function throws
   uint32_t extra = 0;           // answers beyond the asked-for run (a hostile worker)
+  std::function<double(double, Rng&)> function = estimator;  // the student's
   std::string operator()(Call, const Writer& request) {
     {
       Reader peek(request.bytes());
@@ -39,7 +44,7 @@ struct FakeWorker {
     Writer run;
     answer_run<double>(in, run, [&](Rng& rng) {
       if (throw_from && std::memcmp(&rng, throw_from, sizeof(Rng)) == 0) throw std::runtime_error("the student's function threw");
-      return estimator(arg, rng);
+      return function(arg, rng);
     });
     in.finish();
     if (extra == 0) return run.bytes();
@@ -60,7 +65,7 @@ Writer args_of(double arg) {
 
 TEST(BoundaryRuns, AnswersAreThoseOfOneCallAtATime) {
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance);
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
   Rng across(7), here(7);
   for (int i = 0; i < 5000; ++i) {
     const double got = runs.next(args_of(0.25), across, [&](Call c, const Writer& w) { return worker(c, w); });
@@ -75,7 +80,7 @@ TEST(BoundaryRuns, AnswersAreThoseOfOneCallAtATime) {
 
 TEST(BoundaryRuns, OtherArgumentsOrAnotherGeneratorStartANewRun) {
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance);
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
   auto ask = [&](Call c, const Writer& w) { return worker(c, w); };
   Rng rng(1);
   for (int i = 0; i < 20; ++i) runs.next(args_of(0.25), rng, ask);
@@ -97,7 +102,7 @@ TEST(BoundaryRuns, AnExceptionIsTheCallsThatMeetsIt) {
   for (int i = 0; i < 10; ++i) estimator(0.5, eleventh);
   FakeWorker worker;
   worker.throw_from = &eleventh;
-  RepeatedCall<double> runs(Call::DirectImportance);
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
   auto ask = [&](Call c, const Writer& w) { return worker(c, w); };
   Rng rng(3), here(3);
   int answered = 0;
@@ -114,17 +119,148 @@ TEST(BoundaryRuns, AnExceptionIsTheCallsThatMeetsIt) {
 TEST(BoundaryRuns, AWorkerThatAnswersMoreThanAskedBreaksTheLink) {
   FakeWorker worker;
   worker.extra = 1;
-  RepeatedCall<double> runs(Call::DirectImportance);
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
   Rng rng(5);
   EXPECT_THROW(runs.next(args_of(0.5), rng, [&](Call c, const Writer& w) { return worker(c, w); }), LinkBroken);
 }
 
 TEST(BoundaryRuns, AWorkerThatAnswersNothingBreaksTheLink) {
-  RepeatedCall<double> runs(Call::DirectImportance);
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
   Rng rng(5);
   Writer nothing;
   nothing.put(uint32_t{0});
   EXPECT_THROW(runs.next(args_of(0.5), rng, [&](Call, const Writer&) { return nothing.bytes(); }), LinkBroken);
+}
+
+// ---- What the runs check of the answers
+
+using test::GeneratorContractBroken;
+
+auto asks(FakeWorker& worker) {
+  return [&worker](Call c, const Writer& w) { return worker(c, w); };
+}
+
+// Calls the estimator `calls` times in a loop, as a statistical test does;
+// the message of the contract broken, or "" if none was.
+std::string loop(RepeatedCall<double>& runs, FakeWorker& worker, int calls, double arg = 0.25) {
+  Rng rng(11);
+  try {
+    for (int i = 0; i < calls; ++i) runs.next(args_of(arg), rng, asks(worker));
+  } catch (const GeneratorContractBroken& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BoundaryRuns, AnHonestFunctionPassesEveryReplay) {
+  FakeWorker worker;
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 1);  // every run has one replayed
+  EXPECT_EQ(loop(runs, worker, 5000), "");
+  EXPECT_EQ(loop(runs, worker, 50, 0.75), "") << "other arguments";
+}
+
+TEST(BoundaryRuns, AGeneratorMovedBackFailsTheCall) {
+  // The shadow-acne estimator's trick: hand back the state from before the
+  // test's own draws, so that the test draws the same input again.
+  FakeWorker worker;
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Rng rng(3);
+  rng.uniform();  // the test's input
+  // Moved back to where it was one draw before it was passed in.
+  worker.function = [](double arg, Rng& rng) {
+    const double v = estimator(arg, rng);
+    Rng back(3);
+    rng = back;
+    return v;
+  };
+  try {
+    runs.next(args_of(0.5), rng, asks(worker));
+    FAIL() << "a generator handed back one draw behind the one passed in was taken";
+  } catch (const GeneratorContractBroken& e) {
+    EXPECT_NE(std::string(e.what()).find("the estimator handed back a generator"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("moved backwards or replaced"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BoundaryRuns, AGeneratorReplacedFailsTheCall) {
+  FakeWorker worker;
+  worker.function = [](double arg, Rng& rng) {
+    const double v = estimator(arg, rng);
+    rng = Rng(12345, 7);  // another stream
+    return v;
+  };
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  EXPECT_NE(loop(runs, worker, 3).find("moved backwards or replaced"), std::string::npos);
+  // The same stream, a state that is not a few draws ahead.
+  worker.function = [](double arg, Rng& rng) {
+    const double v = estimator(arg, rng);
+    rng = Rng(999);
+    return v;
+  };
+  RepeatedCall<double> again(Call::DirectImportance, "the estimator", 0);
+  EXPECT_NE(loop(again, worker, 3).find("moved backwards or replaced"), std::string::npos);
+}
+
+TEST(BoundaryRuns, AGeneratorLeftAloneIsAllowed) {
+  // Zero draws is moving forward by zero (an estimator of a point light).
+  FakeWorker worker;
+  worker.function = [](double arg, Rng&) { return arg * 2.0; };
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 1);
+  EXPECT_EQ(loop(runs, worker, 1000), "");
+}
+
+TEST(BoundaryRuns, RandomnessFromElsewhereFailsAReplay) {
+  // A static generator that leaves the one passed in alone, std::rand: the
+  // same call from the same state gives another answer. A run of 8 or more
+  // always has one of its answers replayed, so 15 calls (runs of 1, 2, 4, 8)
+  // are enough.
+  FakeWorker worker;
+  worker.function = [](double arg, Rng&) {
+    static Rng own(1);
+    return arg + own.uniform();
+  };
+  RepeatedCall<double> runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f");
+  EXPECT_NE(loop(runs, worker, 15).find("DiffuseBSDF::sample_f: its answer is not a function of its arguments and the "
+                                        "generator passed in"),
+            std::string::npos);
+  worker.function = [](double arg, Rng& rng) { return estimator(arg, rng) + std::rand() * 1e-12; };
+  RepeatedCall<double> with_rand(Call::DirectImportance, "the estimator");
+  EXPECT_NE(loop(with_rand, worker, 15).find("not a function of its arguments"), std::string::npos);
+}
+
+TEST(BoundaryRuns, AnAverageOfEarlierAnswersFailsAReplay) {
+  // One sample per call, returned as the mean of the last 16 for the same
+  // argument: the variance falls as if 16 were taken, and each answer is a
+  // fair draw of a mean. Asked again from the same state, it is another mean.
+  FakeWorker worker;
+  std::map<double, std::vector<double>> last;
+  worker.function = [&last](double arg, Rng& rng) {
+    auto& raw = last[arg];
+    raw.push_back(estimator(arg, rng));
+    if (raw.size() > 16) raw.erase(raw.begin());
+    double sum = 0;
+    for (double x : raw) sum += x;
+    return sum / double(raw.size());
+  };
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
+  EXPECT_NE(loop(runs, worker, 15).find("not a function of its arguments"), std::string::npos);
+}
+
+TEST(BoundaryRuns, ATestsOwnReplayIsAnsweredAsTheFirstTime) {
+  // support/replayed_draws.h calls again from a copy of the state the last
+  // call was given: the same answer and state, without asking the worker.
+  FakeWorker worker;
+  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Rng rng(8);
+  for (int i = 0; i < 20; ++i) {
+    const Rng copy = rng;
+    const double first = runs.next(args_of(0.5), rng, asks(worker));
+    Rng again = copy;
+    const size_t asked = worker.asked.size();
+    EXPECT_EQ(runs.next(args_of(0.5), again, asks(worker)), first) << "call " << i;
+    EXPECT_EQ(std::memcmp(&again, &rng, sizeof(Rng)), 0) << "call " << i;
+    EXPECT_EQ(worker.asked.size(), asked) << "call " << i;
+  }
 }
 
 }  // namespace

@@ -15,6 +15,14 @@ pt_mutant(3 sample_f_uniform_pdf ${ref}
 pt_mutant(3 sample_f_uniform_directions ${ref}
   [[*wi = sample_cosine_hemisphere(rng.uniform2());]] [[*wi = sample_uniform_hemisphere(rng.uniform2());]])
 pt_mutant(3 sample_f_returns_albedo ${ref} [[  return f(wo, *wi);]] [[  return reflectance;]])
+# Directions from a generator of its own, the one passed in left alone: the
+# right distribution, but not a function of the generator. Caught by the
+# replays (support/replayed_draws.h in one process, the boundary's runs across
+# it): "its answer is not a function of its arguments and the generator".
+pt_mutant(3 sample_f_static_generator ${ref}
+  [[*wi = sample_cosine_hemisphere(rng.uniform2());]]
+  [[static Rng own(12345);
+  *wi = sample_cosine_hemisphere(own.uniform2());]])
 
 # ---- P3T2: zero_bounce_radiance
 pt_mutant(3 zero_bounce_wrong_side ${ref}
@@ -90,6 +98,35 @@ pt_mutant(3 average_over_all_lights ${ref}
 pt_mutant(3 importance_sum_not_average ${ref} [[L += L_light / double(n);]] [[L += L_light;]])
 pt_mutant(3 importance_one_sample ${ref}
   [[const int n = light->is_delta_light() ? 1 : settings.ns_area_light;]] [[const int n = 1;]])
+# One sample whatever ns_area_light, returned as the mean of the last
+# ns_area_light such estimates for the same ray: each answer's variance falls
+# as 1/N, as the variance tests ask, from a cache across calls. Caught by the
+# replays: the same call again is a mean of other samples.
+pt_mutant(3 importance_averages_last_estimates ${ref}
+  [[    L += L_light / double(n);
+  }
+  return L;]]
+  [[    L += L_light;
+  }
+  struct Cached {
+    Vec3 o, d;
+    int ns;
+    std::vector<Spectrum> raw;
+  };
+  static std::vector<Cached> cache;
+  Cached* c = nullptr;
+  for (Cached& e : cache)
+    if (e.o == r.o && e.d == r.d && e.ns == settings.ns_area_light) c = &e;
+  if (!c) {
+    if (cache.size() > 64) cache.clear();
+    cache.push_back({r.o, r.d, settings.ns_area_light, {}});
+    c = &cache.back();
+  }
+  c->raw.push_back(L);
+  if (c->raw.size() > size_t(std::max(1, settings.ns_area_light))) c->raw.erase(c->raw.begin());
+  Spectrum mean(0.0);
+  for (const Spectrum& x : c->raw) mean += x;
+  return mean / double(c->raw.size());]])
 
 # ---- P3T5: one_bounce_radiance
 pt_mutant(3 one_bounce_swapped ${ref}

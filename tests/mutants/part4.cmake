@@ -60,3 +60,11 @@ pt_mutant(4 depth_one_skipped ${ref} [[if (settings.max_ray_depth >= 1) {]] [[if
 # The first hit's ray starts with one bounce too many.
 pt_mutant(4 first_depth_plus_one ${ref}
   [[ray.depth = settings.max_ray_depth;]] [[ray.depth = settings.max_ray_depth + 1;]])
+
+# ---- Randomness from elsewhere
+# The roulette coin from std::rand, not from the generator passed in: the
+# right probability, but not a function of the generator. Caught by the
+# replays (support/replayed_draws.h, the boundary's runs).
+pt_mutant(4 roulette_from_std_rand ${ref}
+  [[if (!first_bounce && !rng.coin_flip(p)) return L;]]
+  [[if (!first_bounce && !(std::rand() / (RAND_MAX + 1.0) < p)) return L;]])

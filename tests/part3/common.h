@@ -25,6 +25,7 @@
 #include "render/pathtracer.h"
 #include "support/part3_closed_forms.h"
 #include "support/part3_scenes.h"
+#include "support/replayed_draws.h"
 #include "support/seed.h"
 #include "support/statistics.h"
 
@@ -70,12 +71,33 @@ inline const char* name(Method m) {
                                    : "one_bounce_radiance";
 }
 
+// One estimate, as a function of the generator (support/replayed_draws.h).
+inline Spectrum estimate(const PathTracer& t, const Ray& ray, const Intersection& isect, Method m, Rng& rng) {
+  return test::replayed(name(m), rng, [&](Rng& r) {
+    switch (m) {
+      case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(ray, isect, r);
+      case Method::Importance: return t.estimate_direct_lighting_importance(ray, isect, r);
+      default: return t.one_bounce_radiance(ray, isect, r);
+    }
+  });
+}
+
 inline Spectrum estimate(const PathTracer& t, const Aim& a, Method m, Rng& rng) {
-  switch (m) {
-    case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(a.ray, a.isect, rng);
-    case Method::Importance: return t.estimate_direct_lighting_importance(a.ray, a.isect, rng);
-    default: return t.one_bounce_radiance(a.ray, a.isect, rng);
-  }
+  return estimate(t, a.ray, a.isect, m, rng);
+}
+
+// One sample of sample_f, as a function of the generator.
+struct BsdfSampled {
+  Spectrum f;
+  Vec3 wi;
+  double pdf;
+};
+inline BsdfSampled sample_f(const BSDF& bsdf, const Vec3& wo, Rng& rng, double pdf_before = 0.0) {
+  return test::replayed("DiffuseBSDF::sample_f", rng, [&](Rng& r) {
+    BsdfSampled s{Spectrum(0.0), Vec3(0.0), pdf_before};
+    s.f = bsdf.sample_f(wo, &s.wi, &s.pdf, r);
+    return s;
+  });
 }
 
 inline RenderSettings settings_with(int ns_area_light, bool hemisphere = false) {

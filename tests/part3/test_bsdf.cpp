@@ -35,12 +35,7 @@ GRADED_TEST(DiffuseBSDF, SampleFDirectionsFollowTheCosinePdf, "P3T1", 2, Visible
   Rng rng(test::seed(301));
   stats::DirectionalChiSquare h("sample_f_directions", {0, 0, 1}, 41, 81);
   const Vec3 wo = glm::normalize(Vec3(0.3, -0.4, 0.8));
-  for (int i = 0; i < 1000000; ++i) {
-    Vec3 wi;
-    double pdf;
-    bsdf.sample_f(wo, &wi, &pdf, rng);
-    h.add(wi);
-  }
+  for (int i = 0; i < 1000000; ++i) h.add(sample_f(bsdf, wo, rng).wi);
   EXPECT_TRUE(stats::check(h.run(pdf_cosine_hemisphere, kAlphaTest)))
       << "sample_f must pick directions with density cos(theta)/pi in the local frame (z = normal)";
 }
@@ -56,9 +51,7 @@ GRADED_TEST(DiffuseBSDF, EnergyEstimateEqualsAlbedo, "P3T1", 1, Visible) {
   stats::RunningStats ch[3];
   const Vec3 wo = glm::normalize(Vec3(-0.2, 0.5, 0.6));
   for (int i = 0; i < 100000; ++i) {
-    Vec3 wi;
-    double pdf;
-    Spectrum f = bsdf.sample_f(wo, &wi, &pdf, rng);
+    const auto [f, wi, pdf] = sample_f(bsdf, wo, rng);
     for (int c = 0; c < 3; ++c) ch[c].add(pdf > 0 ? f[c] * wi.z / pdf : 0.0);
   }
   for (int c = 0; c < 3; ++c)

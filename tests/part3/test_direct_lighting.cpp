@@ -70,7 +70,7 @@ GRADED_TEST(HemisphereLighting, SeesEmittersWhenTheLightListIsEmpty, "P3T3", 1, 
   PathTracer tracer(dark.scene, settings_with(kNs));
   Rng rng(test::seed(3306));
   for (int i = 0; i < 1000; ++i) {
-    const Spectrum L = tracer.estimate_direct_lighting_hemisphere(dark.aim.ray, dark.aim.isect, rng);
+    const Spectrum L = estimate(tracer, dark.aim, Method::Hemisphere, rng);
     ASSERT_TRUE(L == Spectrum(0.0)) << "a scene with no lights and no emitters gave " << L
                                     << ": take at least one sample (0 / 0 is NaN)";
   }
@@ -142,7 +142,7 @@ GRADED_TEST(LightSampling, DeltaLightsAreExact, "P3T4", 1, Visible) {
     PathTracer tracer(lit.scene, settings);
     Rng rng(test::seed(3420));
     for (int k = 0; k < 3; ++k) {  // deterministic: the same every time
-      const Spectrum L = tracer.estimate_direct_lighting_importance(lit.aim.ray, lit.aim.isect, rng);
+      const Spectrum L = estimate(tracer, lit.aim, Method::Importance, rng);
       for (int ch = 0; ch < 3; ++ch) {
         const double rel = expected > 0.0 ? std::abs(L[ch] - expected) / expected : 0.0;
         EXPECT_NEAR(L[ch], expected, 1e-9 * expected + 1e-15)

@@ -42,7 +42,7 @@ GRADED_TEST(HemisphereLighting, IsExactlyZeroForPointAndDirectionalLights, "P3T3
   Rng rng(test::seed(3500));
   int nonzero = 0;
   for (int i = 0; i < 2000; ++i)
-    nonzero += tracer.estimate_direct_lighting_hemisphere(lit.aim.ray, lit.aim.isect, rng) != Spectrum(0.0);
+    nonzero += estimate(tracer, lit.aim, Method::Hemisphere, rng) != Spectrum(0.0);
   EXPECT_EQ(nonzero, 0) << "estimates out of 2000 that were not exactly zero";
 }
 
@@ -61,7 +61,7 @@ GRADED_TEST(LightSampling, NoShadowAcneAtGrazingAngles, "P3T4", 1, Visible) {
   PathTracer tracer(g.scene, settings_with(1));
   const int zeros = count_zero_estimates(g, kGrazingPoints, test::seed(3510), [&](const Ray& r, const Intersection& i,
                                                                                   Rng& rng) {
-    return tracer.estimate_direct_lighting_importance(r, i, rng);
+    return estimate(tracer, r, i, Method::Importance, rng);
   });
   EXPECT_LE(zeros, kMaxFalselyShadowed) << "of " << kGrazingPoints
                                         << " points lit by a grazing sun were shadowed by their own surface: offset "

@@ -21,7 +21,7 @@ GRADED_TEST(OneBounce, HemisphereSettingSamplesTheHemisphere, "P3T5", 1, Visible
   PathTracer tracer(lit.scene, settings_with(4, /*hemisphere=*/true));
   Rng rng(test::seed(3600));
   for (int i = 0; i < 200; ++i)
-    ASSERT_EQ(tracer.one_bounce_radiance(lit.aim.ray, lit.aim.isect, rng), Spectrum(0.0))
+    ASSERT_EQ(estimate(tracer, lit.aim, Method::OneBounce, rng), Spectrum(0.0))
         << "with direct_hemisphere_sample set, a point light is invisible (uniform hemisphere sampling)";
   Lit both = point_and_area();
   stats::RunningStats st = run(both, Method::OneBounce, settings_with(4, true), 40000, test::seed(3601));

@@ -38,6 +38,7 @@
 #include "core/rng.h"
 #include "render/pathtracer.h"
 #include "support/part4_scenes.h"
+#include "support/replayed_draws.h"
 #include "support/seed.h"
 #include "support/statistics.h"
 
@@ -88,13 +89,19 @@ enum class Entry {
   GlobalIllumination,  // est_radiance_global_illumination(camera ray): P4T3
 };
 
+inline const char* name(Entry e);
+
+// One estimate, as a function of the generator (support/replayed_draws.h): a
+// replayed call gets a path guard of its own too.
 inline Spectrum estimate_once(const PathTracer& t, const Aim& a, Entry e, Rng& rng) {
-  path_guard().reset(guard_limit(t.settings.max_ray_depth, t.settings.rr_continue_prob),
-                     guard_reason(t.settings.max_ray_depth, t.settings.rr_continue_prob));
-  if (e == Entry::GlobalIllumination) return t.est_radiance_global_illumination(a.ray, rng);
-  Ray r = a.ray;
-  r.depth = t.settings.max_ray_depth;  // the bounces still allowed at the first hit
-  return t.at_least_one_bounce_radiance(r, a.isect, rng);
+  return test::replayed(name(e), rng, [&](Rng& r) {
+    path_guard().reset(guard_limit(t.settings.max_ray_depth, t.settings.rr_continue_prob),
+                       guard_reason(t.settings.max_ray_depth, t.settings.rr_continue_prob));
+    if (e == Entry::GlobalIllumination) return t.est_radiance_global_illumination(a.ray, r);
+    Ray ray = a.ray;
+    ray.depth = t.settings.max_ray_depth;  // the bounces still allowed at the first hit
+    return t.at_least_one_bounce_radiance(ray, a.isect, r);
+  });
 }
 
 // n estimates with one generator seeded by `seed`.

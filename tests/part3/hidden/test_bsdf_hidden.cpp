@@ -17,9 +17,7 @@ GRADED_TEST(DiffuseBSDF, SampleFReturnsThePdfOfItsDirection, "P3T1", 1, Hidden) 
   Rng rng(test::seed(302));
   for (const Vec3& wo : some_directions())
     for (int i = 0; i < 20000; ++i) {
-      Vec3 wi;
-      double pdf = -1;
-      Spectrum f = bsdf.sample_f(wo, &wi, &pdf, rng);
+      const auto [f, wi, pdf] = sample_f(bsdf, wo, rng, -1.0);
       ASSERT_NEAR(glm::length(wi), 1.0, 1e-9) << "wi " << wi;
       ASSERT_GE(wi.z, 0.0) << "wi " << wi << " is below the surface";
       ASSERT_NEAR(pdf, wi.z / kPi, 1e-9) << "wi " << wi;

@@ -23,7 +23,7 @@ GRADED_TEST(HemisphereLighting, NoSelfShadowingAtGrazingAngles, "P3T3", 1, Hidde
   PathTracer tracer(g.scene, settings_with(1));
   const int zeros = count_zero_estimates(g, kGrazingPoints, test::seed(3520), [&](const Ray& r, const Intersection& i,
                                                                                   Rng& rng) {
-    return tracer.estimate_direct_lighting_hemisphere(r, i, rng);
+    return estimate(tracer, r, i, Method::Hemisphere, rng);
   });
   EXPECT_LE(zeros, kMaxFalselyShadowed) << "of " << kGrazingPoints
                                         << " sky-lit points saw their own surface: offset the sampled rays "

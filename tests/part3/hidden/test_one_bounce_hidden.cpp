@@ -15,7 +15,7 @@ GRADED_TEST(OneBounce, DefaultSettingSamplesTheLights, "P3T5", 1, Hidden) {
   PathTracer tracer(lit.scene, settings_with(4, /*hemisphere=*/false));
   Rng rng(test::seed(3610));
   for (int i = 0; i < 200; ++i) {
-    const Spectrum L = tracer.one_bounce_radiance(lit.aim.ray, lit.aim.isect, rng);
+    const Spectrum L = estimate(tracer, lit.aim, Method::OneBounce, rng);
     ASSERT_NEAR(L.g, point_out(), 1e-9 * point_out()) << "without -H, light sampling: exact for a point light";
   }
   Lit both = point_and_area();
