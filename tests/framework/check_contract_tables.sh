@@ -26,11 +26,14 @@ graded_tests() {
   [ $# -gt 0 ] || return 0
   sed -n 's/^[[:space:]]*GRADED_\(TEST\|TEST_F\|EXTENSION_TEST\)([[:space:]]*\([A-Za-z0-9_]*\)[[:space:]]*,[[:space:]]*\([A-Za-z0-9_]*\).*/\2.\3/p' "$@" | sort -u
 }
-trim() { local s=$1; s=${s#"${s%%[![:space:]]*}"}; s=${s%"${s##*[![:space:]]}"}; printf '%s' "$s"; }
+# trim VAR TEXT: VAR = TEXT without leading and trailing blanks (no subshell:
+# a fork per cell made the check take seconds).
+trim() { local s=$2; s=${s#"${s%%[![:space:]]*}"}; s=${s%"${s##*[![:space:]]}"}; printf -v "$1" '%s' "$s"; }
 
-# check_table FILE PART ALLOWED_TESTS KIND: appends "task<TAB>hidden|named" per row to $rows_file.
+# check_table FILE PART KIND: the tests a row may name are the keys of
+# `allowed`; appends "task<TAB>hidden|named" per row to $rows_file.
 check_table() {
-  local file=$1 part=$2 allowed=$3 kind=$4 rel=${1#"$src"/}
+  local file=$1 part=$2 kind=$3 rel=${1#"$src"/}
   local state=before tables=0 lineno=0 line
   while IFS= read -r line || [ -n "$line" ]; do
     lineno=$((lineno + 1))
@@ -41,7 +44,9 @@ check_table() {
     case $state in
       before)
         tables=$((tables + 1))
-        [ "$(trim "$line")" = "$header" ] || fail "$rel:$lineno: the table's header must be exactly '$header'"
+        local head
+        trim head "$line"
+        [ "$head" = "$header" ] || fail "$rel:$lineno: the table's header must be exactly '$header'"
         state=separator
         continue ;;
       separator)
@@ -62,12 +67,14 @@ check_table() {
       continue
     fi
     local task clause stated graded
-    task=$(trim "${cell[0]}"); clause=$(trim "${cell[1]}"); stated=$(trim "${cell[2]}"); graded=$(trim "${cell[3]}")
+    trim task "${cell[0]}"; trim clause "${cell[1]}"; trim stated "${cell[2]}"; trim graded "${cell[3]}"
     [[ $task =~ ^P${part}T[0-9]+$ ]] || fail "$rel:$lineno: task '$task' is not a task of part $part (P${part}T1, P${part}T2, ...)"
     [ -n "$clause" ] || fail "$rel:$lineno: $task: empty clause"
     [ -n "$stated" ] || fail "$rel:$lineno: $task: empty 'stated in' (a header path and/or a handout section)"
-    local path
-    for path in $(grep -oE '(skeleton|handouts)/[A-Za-z0-9_./-]*[A-Za-z0-9_]' <<< "$stated"); do
+    local rest=$stated path
+    while [[ $rest =~ (skeleton|handouts)/[A-Za-z0-9_./-]*[A-Za-z0-9_] ]]; do
+      path=${BASH_REMATCH[0]}
+      rest=${rest#*"$path"}
       [ -f "$src/$path" ] || fail "$rel:$lineno: $task: 'stated in' names $path, which does not exist"
     done
     if [ -z "$graded" ]; then
@@ -79,20 +86,21 @@ check_table() {
       printf '%s\thidden\n' "$task" >> "$rows_file"
       continue
     fi
-    local rest
-    rest=$(sed -E 's/`[A-Za-z0-9_]+\.[A-Za-z0-9_]+`//g' <<< "$graded")
-    [[ $rest =~ ^[[:space:],]*$ ]] ||
-      fail "$rel:$lineno: $task: 'graded by' is backticked Suite.Name entries separated by commas, or the word hidden: '$graded'"
     local name
-    for name in $(grep -oE '`[A-Za-z0-9_]+\.[A-Za-z0-9_]+`' <<< "$graded" | tr -d '`'); do
-      if ! grep -qxF "$name" <<< "$allowed"; then
-        if [ "$kind" = visible ] && grep -qxF "$name" <<< "$hidden_tests"; then
+    rest=$graded
+    while [[ $rest =~ ^[[:space:],]*\`([A-Za-z0-9_]+\.[A-Za-z0-9_]+)\`(.*)$ ]]; do
+      name=${BASH_REMATCH[1]}
+      rest=${BASH_REMATCH[2]}
+      if [ -z "${allowed[$name]:-}" ]; then
+        if [ "$kind" = visible ] && [ -n "${hidden_set[$name]:-}" ]; then
           fail "$rel:$lineno: $task: $name is a hidden test: name it in hidden/CONTRACT.md and write hidden here"
         else
           fail "$rel:$lineno: $task: no graded test $name in tests/part$part"
         fi
       fi
     done
+    [[ $rest =~ ^[[:space:],]*$ ]] ||
+      fail "$rel:$lineno: $task: 'graded by' is backticked Suite.Name entries separated by commas, or the word hidden: '$graded'"
     printf '%s\tnamed\n' "$task" >> "$rows_file"
   done < "$file"
   [ $tables -gt 0 ] || fail "$rel: no table headed '$header'"
@@ -109,15 +117,17 @@ for part in 1 2 3 4 5; do
     continue
   fi
   checked="$checked $part"
-  visible_tests=$(graded_tests "$dir"/*.cpp)
-  hidden_tests=""
-  [ -d "$dir/hidden" ] && hidden_tests=$(graded_tests "$dir"/hidden/*.cpp)
+  declare -A allowed=() hidden_set=()
+  for name in $(graded_tests "$dir"/*.cpp); do allowed[$name]=1; done
+  [ -d "$dir/hidden" ] && for name in $(graded_tests "$dir"/hidden/*.cpp); do hidden_set[$name]=1; done
   : > "$rows_file"
-  check_table "$table" $part "$visible_tests" visible
+  check_table "$table" $part visible
   rows=$(cat "$rows_file")
+  for name in "${!hidden_set[@]}"; do allowed[$name]=1; done
   : > "$rows_file"
-  [ -f "$hidden_table" ] && check_table "$hidden_table" $part "$(printf '%s\n%s' "$visible_tests" "$hidden_tests")" hidden
+  [ -f "$hidden_table" ] && check_table "$hidden_table" $part hidden
   hidden_rows=$(cat "$rows_file")
+  unset allowed hidden_set
   task_files=("$src"/tasks/part${part}_*.cpp)
   for task in $([ ${#task_files[@]} -gt 0 ] && cat "${task_files[@]}" | grep -oE "TODO\(P${part}T[0-9]+\)" | sed 's/TODO(\(.*\))/\1/' | sort -u); do
     grep -q "^$task"$'\t' <<< "$rows"$'\n'"$hidden_rows" || fail "tests/part$part/CONTRACT.md: task $task (tagged in tasks/) has no row"

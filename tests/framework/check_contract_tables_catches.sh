@@ -23,7 +23,8 @@ write "$t/tests/part1/CONTRACT.md" \
   '| P1T2 | a name that is no test | handouts/part1.md | `Fix.Gone` |' \
   '| P1T2 | a hidden name in sight | handouts/part1.md | `Suite.Secret` |' \
   '| P1T3 | held by hidden tests | skeleton/missing.h | hidden |' \
-  '| P2T1 | another part | handouts/part1.md | `Suite.Seen` |'
+  '| P2T1 | another part | handouts/part1.md | `Suite.Seen` |' \
+  '| P1T1 | loose words | handouts/part1.md | `Suite.Seen` and the camera tests |'
 write "$t/tests/part1/hidden/CONTRACT.md" '| P1T1 | other task | handouts/part1.md | `Suite.Secret` |'
 out=$("$here/check_contract_tables.sh" "$t" "1 2")
 status=$?
@@ -36,6 +37,7 @@ for expected in "tests/part2/CONTRACT.md: missing" \
                 "P1T3: 'stated in' names skeleton/missing.h, which does not exist" \
                 "task 'P2T1' is not a task of part 1" \
                 "task P1T4 (tagged in tasks/) has no row" \
+                "P1T1: 'graded by' is backticked Suite.Name entries separated by commas, or the word hidden" \
                 "a row of P1T3 is graded 'hidden' and tests/part1/hidden/CONTRACT.md has no row for P1T3"; do
   grep -qF -- "$expected" <<< "$out" || { echo "not caught: $expected"; exit 1; }
 done
