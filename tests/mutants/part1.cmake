@@ -118,6 +118,26 @@ pt_mutant(1 px_own_rng ${p1} [[  for (int i = 0; i < n; ++i) {
   for (int i = 0; i < n; ++i) {
     Vec2 u = n == 1 ? Vec2(0.5) : own.uniform2();]])
 
+# The first sample through the pixel's centre, the others jittered: the
+# centre weighs 1/N extra (a biased pixel).
+# Caught by PixelSampling.EverySampleIsUniformInThePixel.
+pt_mutant(1 px_first_sample_centred ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]]
+          [[Vec2 u = n == 1 || i == 0 ? Vec2(0.5) : rng.uniform2();]])
+
+# Hands the radiance estimates a copy of the generator: each estimate draws
+# the numbers the next sample's jitter draws again.
+# Caught by PixelSampling.EstimatesDrawFromTheRngPassedIn.
+pt_mutant(1 px_estimate_gets_copy ${p1} [[    sum += est_radiance_global_illumination(r, rng);]]
+          [[    Rng copy = rng;
+    sum += est_radiance_global_illumination(r, copy);]])
+
+# The radiance estimates draw from a generator of the loop's own: the pixel
+# no longer depends on the rng passed in, and two calls alike differ.
+# Caught by PixelSampling.EstimatesDrawFromTheRngPassedIn.
+pt_mutant(1 px_estimate_own_rng ${p1} [[    sum += est_radiance_global_illumination(r, rng);]]
+          [[    static thread_local Rng own(12345);
+    sum += est_radiance_global_illumination(r, own);]])
+
 # ---- P1T3 Triangle::has_intersection, Triangle::intersect ----
 # The reference is the watertight test (u, v, w: the edge functions, the
 # unnormalised weights of p1, p2, p3); each mutant is the bug a student makes
@@ -229,6 +249,15 @@ pt_mutant(1 tri_absolute_det_epsilon ${p1} [[if (det == 0.0) return false;]] [[i
 # Caught by TriangleIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
 pt_mutant(1 tri_strict_t_range ${p1} [[if (!(t >= r.min_t && t <= r.max_t)) return false;]]
   [[if (!(t > r.min_t && t < r.max_t)) return false;]])
+
+# has_intersection shrinks the ray's max_t as intersect does: only
+# intersect() may change the range.
+# Caught by TriangleIntersect.HitRecordOnHitAndMiss.
+pt_mutant(1 tri_has_shrinks_max_t ${p1} [[  TriangleHit hit;
+  return watertight(r, p1(), p2(), p3(), &hit);]] [[  TriangleHit hit;
+  if (!watertight(r, p1(), p2(), p3(), &hit)) return false;
+  r.max_t = hit.t;
+  return true;]])
 
 # ---- P1T4 Sphere::test, Sphere::has_intersection, Sphere::intersect ----
 
@@ -351,3 +380,10 @@ pt_mutant(1 sph_cancelling_root_no_q_zero_case ${p1} [[double q = -0.5 * (b + st
     t1 = t2 = 0.0;  // origin on the sphere, ray tangent to it
     return true;
   }]] [[double q = -0.5 * (b - std::copysign(std::sqrt(disc), b));]])
+
+# Leaves the barycentric weights as an earlier hit wrote them (a triangle's),
+# where a sphere's are 0.
+# Caught by SphereIntersect.HitRecordOnHitAndMiss.
+pt_mutant(1 sphere_keeps_barycentric ${p1} [[  isect->barycentric = Vec3(0.0);
+]] [[]])
+

@@ -13,7 +13,8 @@ pt_mutant(2 slab_no_swap ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);]]
 # Swaps when t_near > t_far instead of by the sign of the direction: with a
 # -0.0 component and the origin on a slab plane, one of them is NaN and the
 # comparison is false, so the infinities stay reversed. Caught by
-# BBoxSlab.NegativeZeroOnSlabPlane, BVHCorrectness.NegativeZeroComponentsOnGridLines.
+# BBoxSlab.AxisParallelRays, BBoxSlab.NegativeZeroOnSlabPlane (hidden),
+# BVHCorrectness.NegativeZeroComponentsOnGridLines (hidden).
 pt_mutant(2 slab_swap_by_t ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);]]
           [[if (t_near > t_far) std::swap(t_near, t_far);]])
 
@@ -253,3 +254,40 @@ pt_mutant(2 volume_cost ${p2} [[        right_cost[k] = box.surface_area() * dou
         box.expand(bins[a][k].box);
         n += bins[a][k].count;
         double cost = box.extent().x * box.extent().y * box.extent().z * double(n) + right_cost[k + 1];]])
+
+# Binned SAH whose left-to-right sweep does not reset the box the right-to-left
+# sweep grew: every left side costs the whole node's area, so the builder
+# peels few primitives off the left at each level. Bad trees, right answers.
+# Caught by BVHQuality.SahCostWithOneHugeTriangle (3.1-3.9x the baseline's cost, factor 2).
+pt_mutant(2 sah_left_box_not_reset ${p2} [[      box = BBox();
+      n = 0;
+      for (int k = 0; k < kBins - 1; ++k) {]] [[      n = 0;
+      for (int k = 0; k < kBins - 1; ++k) {]])
+
+# any-hit written recursively, testing every box on [0, inf) instead of the
+# ray's interval: right answers, but a shadow ray tests the primitives of
+# every leaf along its line, beyond its light.
+# Caught by BVHTraversal.AnyHitStaysWithinTheRayInterval.
+pt_mutant(2 anyhit_range_blind ${p2} [[bool BVHAccel::has_intersection(const Ray& r, const BVHNode* node) const {
+  QueryWork work;]] [[bool BVHAccel::has_intersection(const Ray& r, const BVHNode* node) const {
+  {
+    double b0 = 0.0, b1 = kInf;  // the box on the whole half-line
+    if (!node->bb.intersect(r, b0, b1)) return false;
+    if (node->is_leaf()) {
+      for (size_t i = node->start; i < node->end; ++i)
+        if (primitives_[i]->has_intersection(r)) return true;
+      return false;
+    }
+    return has_intersection(r, node->l.get()) || has_intersection(r, node->r.get());
+  }
+  QueryWork work;]])
+
+# A closest-hit stack of 16 entries that silently drops a far child when
+# full: a ray that defers more than 16 subtrees at once misses its closest
+# hit when it waits in a dropped one.
+# Caught by BVHCorrectness.DeepTreeManyDeferredSubtrees.
+pt_mutant(2 stack16_drops_far_child ${p2} [[        if (size < kStackSize) {
+          stack[size++] = {e.far, e.far_t0};
+        } else {
+          hit |= intersect(r, isect, e.far);
+        }]] [[        if (size < 16) stack[size++] = {e.far, e.far_t0};  // full: dropped]])

@@ -6,6 +6,7 @@
 // P1T1: a mistake in generate_ray does not cost P1T2 points, as long as
 // generate_ray runs and gives different directions for different points.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "support/part1_builders.h"
 #include "support/scripted_tracer.h"
 #include "support/seed.h"
+#include "support/statistics.h"
 
 namespace pt::test::p1 {
 namespace {
@@ -66,6 +68,22 @@ class PixelSampling : public ::testing::Test {
     return p;
   }
   Vec2 pixel_point(const Ray& r, int x, int y) const { return pixel_point(r, Vec2(x + 0.5, y + 0.5)); }
+  // The same, starting from where a pinhole camera as P1T1 describes it
+  // would have sent the ray (one or two Gauss-Newton steps instead of ten,
+  // for tests that map thousands of rays); from the pixel centre when that
+  // point is nowhere near the pixel.
+  Vec2 pixel_point_near_pinhole(const Ray& r, int x, int y) const {
+    const Camera& cam = scene.camera;
+    const Vec3 c = glm::transpose(cam.c2w) * r.d;
+    Vec2 guess(x + 0.5, y + 0.5);
+    if (c.z < 0.0) {
+      const Vec2 sensor(-c.x / c.z / std::tan(glm::radians(cam.hfov) / 2.0),
+                        -c.y / c.z / std::tan(glm::radians(cam.vfov) / 2.0));
+      const Vec2 g((sensor.x + 1.0) / 2.0 * settings.width, (sensor.y + 1.0) / 2.0 * settings.height);
+      if (g.x > x - 1.0 && g.x < x + 2.0 && g.y > y - 1.0 && g.y < y + 2.0) guess = g;
+    }
+    return pixel_point(r, guess);
+  }
 
   LookAt pose;
   Scene scene;
@@ -205,6 +223,101 @@ GRADED_TEST_F(PixelSampling, JitterComesFromTheRngPassedIn, "P1T2", 0.5, Visible
       },
       seed(7)))
       << where(3, 2, ns);
+}
+
+// Every one of the N samples of a pixel is uniform in it, the first as much
+// as the others (a loop that sends one sample through the centre and jitters
+// the rest weighs the centre 1/N extra: a biased pixel). Pearson's chi-square
+// over 17 cells of the pixel: a 4 x 4 grid, minus a centre square of side 0.1,
+// which is the 17th cell (expected counts: 500 samples x area; the centre
+// cell expects 5, the grid's cells 31.1 or 31.25), once with N = 2 (250
+// pixels) and once with N = 16 (32 pixels), each at alpha = 5e-6 (critical
+// value 54.1 at 16 degrees of freedom): a correct loop fails the test with
+// probability 1e-5 (Sidak). Measured over seed offsets 0 to 19: the
+// reference 10.7-29.6 (N = 2) and 10.5-23.5 (N = 16); the first sample
+// through the centre 12,231 and 189 (251 and 35 samples in the centre cell).
+// Positions are where the rays went, whatever the numbers drawn to put them.
+GRADED_TEST_F(PixelSampling, EverySampleIsUniformInThePixel, "P1T2", 0.5, Visible) {
+  const int x = 6, y = 1;
+  const double side = 0.1;  // the centre cell
+  const struct {
+    int ns, pixels;
+  } runs[] = {{2, 250}, {16, 32}};
+  Rng rng(seed(8));
+  for (const auto& run : runs) {
+    std::vector<double> observed(17, 0.0), expected(17, 0.0);
+    const double n = double(run.ns) * run.pixels;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) expected[j * 4 + i] = n / 16.0 - ((i == 1 || i == 2) && (j == 1 || j == 2) ? n * side * side / 4.0 : 0.0);
+    expected[16] = n * side * side;
+    for (int k = 0; k < run.pixels; ++k) {
+      ScriptedTracer t = tracer(run.ns);
+      t.raytrace_pixel(x, y, rng);
+      ASSERT_EQ(t.rays.size(), size_t(run.ns)) << where(x, y, run.ns);
+      for (const Ray& r : t.rays) {
+        const Vec2 p = pixel_point_near_pinhole(r, x, y) - Vec2(x, y);
+        if (inversion_failed_) return;
+        if (std::abs(p.x - 0.5) < side / 2 && std::abs(p.y - 0.5) < side / 2) {
+          observed[16] += 1;
+        } else {
+          const int i = std::clamp(int(p.x * 4.0), 0, 3), j = std::clamp(int(p.y * 4.0), 0, 3);
+          observed[j * 4 + i] += 1;
+        }
+      }
+    }
+    stats::ChiSquareResult chi = stats::chi_square_test(observed, expected, 5e-6);
+    testing::Test::RecordProperty("chi_square_ns" + std::to_string(run.ns), std::to_string(chi.statistic));
+    EXPECT_TRUE(chi.passed()) << "The samples of a pixel are not uniform in it: " << observed[16] << " of " << n
+                              << " landed in the square of side " << side << " around the centre (expected " << expected[16]
+                              << "). Every sample, the first one too, goes through (x + u, y + v) with (u, v) = "
+                                 "rng.uniform2(); only ns_aa == 1 uses the centre.\n"
+                              << chi.describe() << "\n" << where(x, y, run.ns) << " (" << run.pixels << " calls)";
+  }
+}
+
+// Section 2 of the handout: the radiance estimates draw from the generator
+// passed in too, after the jitter, as one stream. The scripted estimate
+// returns the number it draws. Generators seeded alike give the same pixel,
+// others another; and no number an estimate drew is one the jitter drew (a
+// copy of the generator would hand the estimate the numbers the next
+// sample's jitter then draws again). A correct loop fails only if one of 8
+// estimates' numbers falls within 1e-9 of one of 16 jitter offsets: < 3e-7.
+GRADED_TEST_F(PixelSampling, EstimatesDrawFromTheRngPassedIn, "P1T2", 0.5, Visible) {
+  const int ns = 8, x = 3, y = 2;
+  struct Drawing : ScriptedTracer {
+    using ScriptedTracer::ScriptedTracer;
+    Spectrum est_radiance_global_illumination(const Ray& r, Rng& rng) const override {
+      ScriptedTracer::est_radiance_global_illumination(r, rng);
+      drawn.push_back(rng.uniform());
+      return Spectrum(drawn.back());
+    }
+    mutable std::vector<double> drawn;
+  };
+  settings.ns_aa = ns;
+  Drawing first(scene, settings, constant(Spectrum(0.0))), second(first), third(first);
+  auto pixel = [&](const Drawing& t, uint64_t s) {
+    Rng rng(s);
+    return t.raytrace_pixel(x, y, rng).radiance;
+  };
+  const Spectrum a = pixel(first, seed(9)), again = pixel(second, seed(9)), other = pixel(third, seed(9) + 1);
+  ASSERT_EQ(first.drawn.size(), size_t(ns)) << where(x, y, ns);
+  EXPECT_EQ(a, again) << "Two calls with generators seeded alike gave different pixels (" << a << " and " << again
+                      << ") from a radiance estimate that returns the number it draws from the rng it is given: pass "
+                         "the rng you were given on to est_radiance_global_illumination.\n"
+                      << where(x, y, ns);
+  EXPECT_NE(a, other) << "Generators seeded differently gave the same pixel " << a
+                      << ": the radiance estimates do not draw from the rng passed in.\n"
+                      << where(x, y, ns);
+  for (size_t k = 0; k < first.rays.size(); ++k) {
+    const Vec2 p = pixel_point(first.rays[k], x, y) - Vec2(x, y);
+    for (size_t e = 0; e < first.drawn.size(); ++e)
+      for (double u : {p.x, p.y})
+        ASSERT_GT(std::abs(first.drawn[e] - u), 1e-9)
+            << "Radiance estimate " << e << " drew " << first.drawn[e] << ", the jitter offset of sample " << k
+            << " (" << p << "): the estimates were given a copy of the generator, which repeats the numbers the "
+               "jitter draws. Pass the rng itself (by reference) to est_radiance_global_illumination.\n"
+            << where(x, y, ns);
+  }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // rays of sphere_cases.h (placed by their closest approach to the centre).
 #include <sstream>
 
+#include "hit_record.h"
 #include "sphere_cases.h"
 #include "support/graded.h"
 #include "support/seed.h"
@@ -211,6 +212,46 @@ GRADED_TEST(SphereIntersect, RecordsPrimitiveAndBsdf, "P1T4", 0.5, Visible) {
   ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
   EXPECT_EQ(isect.primitive, &s) << "isect.primitive must be the sphere hit (this).\n" << ctx;
   EXPECT_EQ(isect.bsdf, s.get_bsdf()) << "isect.bsdf must be the sphere's get_bsdf().\n" << ctx;
+}
+
+// Every field of the hit record, written on a hit over what an earlier hit on
+// a triangle left there (barycentric weights included: a sphere's are 0);
+// nothing written on a miss; the ray's range changed only by intersect() on
+// a hit. From outside (near root) and from inside (far root).
+GRADED_TEST(SphereIntersect, HitRecordOnHitAndMiss, "P1T4", 0.5, Visible) {
+  Sphere s(Vec3(1, -2, 3), 2.5, &g_bsdf);
+  TriangleSet others;
+  const Triangle& other = others.add(Vec3(9, 9, 9), Vec3(10, 9, 9), Vec3(9, 10, 9));
+  const Intersection before = earlier_hit(&other, other.get_bsdf());
+  const Approach cases[] = {approach(Vec3(0.3, -0.4, 1.0), 6.0, 1.5, 0.4), approach(Vec3(-1.0, 0.2, 0.1), 0.5, 0.7, 2.0)};
+  for (const Approach& a : cases) {
+    const Ray base = ray_past(s, a);
+    const double t = near_root(s, a) >= 0.0 ? near_root(s, a) : far_root(s, a);
+    const std::string ctx = context(s, base);
+    Ray r = base;
+    ASSERT_TRUE(s.has_intersection(r)) << "has_intersection missed.\n" << ctx;
+    ASSERT_TRUE(range_unchanged("has_intersection", r, base)) << "\n" << ctx;
+    Intersection isect = before;
+    ASSERT_TRUE(s.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+    EXPECT_TRUE(Near("isect.t", isect.t, t, kTol)) << "\n" << ctx;
+    EXPECT_TRUE(VecNear("isect.n", isect.n, (base.at(t) - s.o) / s.r, 1e-9)) << "\n" << ctx;
+    EXPECT_TRUE(VecNear("isect.barycentric", isect.barycentric, Vec3(0.0), 0.0))
+        << "\nA sphere has no barycentric weights: set them to 0, or they stay as an earlier triangle hit wrote them "
+           "("
+        << before.barycentric << " here).\n"
+        << ctx;
+    EXPECT_EQ(isect.primitive, &s) << "isect.primitive after a hit on this sphere\n" << ctx;
+    EXPECT_EQ(isect.bsdf, s.get_bsdf()) << "isect.bsdf after a hit on this sphere\n" << ctx;
+    EXPECT_EQ(r.max_t, isect.t) << "r.max_t after the hit\n" << ctx;
+    EXPECT_EQ(r.min_t, base.min_t) << "r.min_t after the hit\n" << ctx;
+    if (testing::Test::HasFailure()) return;
+    // Misses: the range ends before the hit; the sphere behind; a line past it.
+    Ray short_ray = base;
+    short_ray.max_t = 0.99 * t;
+    const Ray behind(base.o, -base.d), past(s.o + 1.01 * s.r * a.p - a.D * a.u, a.u);
+    for (const Ray& miss : {short_ray, a.D > s.r ? behind : short_ray, past})
+      EXPECT_TRUE(miss_changes_nothing(s, miss, before)) << "\n" << context(s, miss);
+  }
 }
 
 GRADED_TEST(SphereIntersect, HasIntersectionAgreesWithIntersect, "P1T4", 0.5, Visible) {

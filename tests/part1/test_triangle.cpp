@@ -2,6 +2,7 @@
 // triangle_cases.h.
 #include <sstream>
 
+#include "hit_record.h"
 #include "support/graded.h"
 #include "support/seed.h"
 #include "triangle_cases.h"
@@ -64,6 +65,43 @@ GRADED_TEST(TriangleIntersect, RecordsPrimitiveAndBsdf, "P1T3", 0.5, Visible) {
   ASSERT_TRUE(tri.intersect(r, &isect)) << "intersect missed.\n" << ctx;
   EXPECT_EQ(isect.primitive, &tri) << "isect.primitive must be the triangle hit (this).\n" << ctx;
   EXPECT_EQ(isect.bsdf, tri.get_bsdf()) << "isect.bsdf must be the triangle's get_bsdf().\n" << ctx;
+}
+
+// Every field of the hit record, written on a hit over what an earlier hit
+// on another primitive left there; nothing written on a miss; the ray's
+// range changed only by intersect() on a hit.
+GRADED_TEST(TriangleIntersect, HitRecordOnHitAndMiss, "P1T3", 0.5, Visible) {
+  auto set = general_triangle();
+  const Triangle& tri = *set->tris[0];
+  TriangleSet others;
+  const Triangle& other = others.add(Vec3(5, 5, 5), Vec3(6, 5, 5), Vec3(5, 6, 5));
+  const Intersection before = earlier_hit(&other, other.get_bsdf());
+  for (const HitCase& c : kHits) {
+    const Ray base = ray_to(tri, c.w1, c.w2, c.w3, c.d, c.t);
+    const std::string ctx = context(tri, base, &c);
+    Ray r = base;
+    ASSERT_TRUE(tri.has_intersection(r)) << "has_intersection missed.\n" << ctx;
+    ASSERT_TRUE(range_unchanged("has_intersection", r, base)) << "\n" << ctx;
+    Intersection isect = before;
+    ASSERT_TRUE(tri.intersect(r, &isect)) << "intersect missed.\n" << ctx;
+    const Vec3 n = glm::normalize(c.w1 * tri.n1() + c.w2 * tri.n2() + c.w3 * tri.n3());
+    EXPECT_TRUE(Near("isect.t", isect.t, c.t, kTol)) << "\n" << ctx;
+    EXPECT_TRUE(VecNear("isect.n", isect.n, n, kTol)) << "\n" << ctx;
+    EXPECT_TRUE(VecNear("isect.barycentric", isect.barycentric, Vec3(c.w1, c.w2, c.w3), kTol)) << "\n" << ctx;
+    EXPECT_EQ(isect.primitive, &tri) << "isect.primitive after a hit on this triangle\n" << ctx;
+    EXPECT_EQ(isect.bsdf, tri.get_bsdf()) << "isect.bsdf after a hit on this triangle\n" << ctx;
+    EXPECT_EQ(r.max_t, isect.t) << "r.max_t after the hit\n" << ctx;
+    EXPECT_EQ(r.min_t, base.min_t) << "r.min_t after the hit\n" << ctx;
+    if (testing::Test::HasFailure()) return;
+    // Misses of the same line: the range ends just before the hit, starts just
+    // after it; and a ray beside the triangle.
+    Ray short_ray = base, late_ray = base;
+    short_ray.max_t = 0.99 * c.t;
+    late_ray.min_t = 1.01 * c.t;
+    const Vec3 beyond = 1.2 * tri.p1() - 0.1 * tri.p2() - 0.1 * tri.p3();
+    for (const Ray& miss : {short_ray, late_ray, Ray(beyond - c.t * c.d, c.d)})
+      EXPECT_TRUE(miss_changes_nothing(tri, miss, before)) << "\n" << context(tri, miss);
+  }
 }
 
 GRADED_TEST(TriangleIntersect, MissesBesideEachEdge, "P1T3", 0.5, Visible) {

@@ -83,6 +83,11 @@ GRADED_TEST(BBoxSlab, AxisParallelRays, "P2T2", 1, Visible) {
   EXPECT_TRUE(slab(kBox, ray({-5, 0.5, -3}, {1, 0.25, 0}), 0, kInf, true, 4, 6));  // on z = min
   EXPECT_TRUE(slab(kBox, ray({-5, -2, 0.5}, {1, 0, 0.125}), 0, kInf, true, 4, 6)); // on y = min
   EXPECT_TRUE(slab(kBox, ray({0.5, 10, -3}, {-0.0, -2, 0}), 0, kInf, true, 4, 6)); // on z = min, -0 in x
+  // ... and with -0.0 in the parallel axis itself: 1 / -0.0 = -inf, so t_near
+  // and t_far come out reversed and one of them is NaN. Swap by the sign of
+  // the direction: a swap decided by comparing them (NaN) does not happen.
+  EXPECT_TRUE(slab(kBox, ray({0.5, -2, -10}, {0, -0.0, 1}), 0, kInf, true, 7, 13));     // on y = min
+  EXPECT_TRUE(slab(kBox, ray({-5, 2, 0.5}, {1, -0.0, 0.125}), 0, kInf, true, 4, 6));   // on y = max
   // On a slab plane but outside another slab: still a miss.
   EXPECT_TRUE(slab(kBox, ray({1, 5, -10}, {0, 0, 1}), 0, kInf, false));
   EXPECT_TRUE(slab(kBox, ray({-5, 2.5, 3}, {1, 0, 0}), 0, kInf, false));

@@ -141,5 +141,21 @@ GRADED_TEST(BVHQuality, SahCostOnFlatPlane, "P2T1", 1, Visible) {
   expect_cost_within(s, 2.5);
 }
 
+// One triangle 2,000 units across among 4,000 tiny ones (edges ~0.02) in
+// [-10, 10]^3. Every candidate split puts the huge box on one side, so what
+// a split costs there hangs on the other side's box: a cost that lets
+// anything of one candidate's evaluation into another's (a binned sweep
+// whose left box is not reset after the right-to-left sweep, so that every
+// left side costs the whole node's area) builds a tree 39 levels deep at
+// 3.3x the baseline's cost. Measured over seed offsets 0 to 2, ratios to the
+// baseline (11.9-12.9): median + SAH 1.00-1.17, midpoint + SAH 1.00-1.16,
+// single-axis splits 0.99-1.17, x axis only 1.03-1.10, binned SAH (the
+// reference) 0.39-0.69 (seed offsets 0 to 19); the unreset left box
+// 3.06-3.91 (seed offsets 0 to 9). Factor 2: 1.7x above the worst accepted
+// method, 1.5x below that bug.
+GRADED_TEST(BVHQuality, SahCostWithOneHugeTriangle, "P2T1", 0.5, Visible) {
+  expect_cost_within(make_huge_among_tiny(seed(327), 4000), 2.0);
+}
+
 }  // namespace
 }  // namespace pt::test::p2

@@ -25,6 +25,9 @@ hidden=$(awk -F'"' '/"test":/{t=$4} /"visibility": *"hidden"/{print t; exit}' "$
 [ -n "$hidden" ] || { echo "no hidden test in $manifest"; exit 1; }
 leak hidden_name "echo '// see $hidden' >> tests/part1/test_camera.cpp"
 leak hidden_folder "mkdir -p tests/part1/hidden && touch tests/part1/hidden/x.cpp"
+# A hidden contract table's rows copied into the visible one name hidden tests.
+[ -f "$source/tests/part1/hidden/CONTRACT.md" ] || { echo "no tests/part1/hidden/CONTRACT.md to leak"; exit 1; }
+leak hidden_contract_rows "grep '^| P1T' '$source/tests/part1/hidden/CONTRACT.md' >> tests/part1/CONTRACT.md"
 # scenes/reference/ may hold the library's images, and nothing else.
 leak source_among_images "touch scenes/reference/part1_raygen_intersect.cpp"
 leak reference_folder "mkdir -p tools/reference && touch tools/reference/notes.txt"
