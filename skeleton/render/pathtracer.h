@@ -65,8 +65,9 @@ class PathTracer {
 
 // P5T1: draws samples from next_sample in batches of samples_per_batch until
 // 1.96 * sigma / sqrt(n) <= max_tolerance * mu for the illuminance of the
-// samples (checked after each whole batch), or max_samples are taken. Returns
-// the mean radiance and the sample count.
+// samples (checked after each whole batch), or max_samples are taken (none
+// when max_samples <= 0). Returns the mean radiance (black for no sample) and
+// the sample count.
 PixelEstimate sample_adaptively(const std::function<Spectrum()>& next_sample, int max_samples, int samples_per_batch,
                                 double max_tolerance);
 

@@ -131,3 +131,44 @@ pt_mutant(3 importance_averages_last_estimates ${ref}
 # ---- P3T5: one_bounce_radiance
 pt_mutant(3 one_bounce_swapped ${ref}
   [[return settings.direct_hemisphere_sample ?]] [[return !settings.direct_hemisphere_sample ?]])
+# The surface's own emission added to its direct light: every emitter seen by
+# the camera twice as bright, and counted again at every vertex of a path.
+# Caught by OneBounce.LeavesOutTheSurfacesOwnEmission.
+pt_mutant(3 one_bounce_adds_emission ${ref}
+  [[  return settings.direct_hemisphere_sample ? estimate_direct_lighting_hemisphere(r, isect, rng)
+                                           : estimate_direct_lighting_importance(r, isect, rng);]]
+  [[  return zero_bounce_radiance(r, isect) + (settings.direct_hemisphere_sample
+                                                 ? estimate_direct_lighting_hemisphere(r, isect, rng)
+                                                 : estimate_direct_lighting_importance(r, isect, rng));]])
+# The sample count decided once, by the first light: with a delta light first,
+# every area light and the sky get one sample (unbiased; their noise does not
+# fall with ns_area_light). Caught by
+# LightSampling.EveryLightWithAnAreaTakesNsAreaLightSamples.
+pt_mutant(3 count_of_the_first_light ${ref}
+  [[  for (const auto& light : scene->lights) {
+    // A delta light has a single direction: more samples would repeat it.
+    const int n = light->is_delta_light() ? 1 : settings.ns_area_light;]]
+  [[  const int n = !scene->lights.empty() && scene->lights[0]->is_delta_light() ? 1 : settings.ns_area_light;
+  for (const auto& light : scene->lights) {]])
+
+# ---- Randomness only from the Rng passed in (each caught by DirectRandomness.*)
+# sample_f drawing from a static generator of its own: right distribution,
+# renders no longer reproducible per pixel, threads racing on one generator.
+pt_mutant(3 sample_f_own_generator ${ref}
+  [[*wi = sample_cosine_hemisphere(rng.uniform2());]]
+  [[static Rng own(12345);
+  *wi = sample_cosine_hemisphere(own.uniform2());]])
+pt_mutant(3 hemisphere_own_generator ${ref}
+  [[Vec3 w_in = sample_uniform_hemisphere(rng.uniform2());]]
+  [[static Rng own(12345);
+    Vec3 w_in = sample_uniform_hemisphere(own.uniform2());]])
+# Light sampling from a copy: the rng passed in never moves, so the next
+# estimate (Part 4's next vertex) draws the very same numbers again.
+pt_mutant(3 importance_copies_rng ${ref}
+  [[Spectrum PathTracer::estimate_direct_lighting_importance(const Ray& r, const Intersection& isect, Rng& rng) const {]]
+  [[Spectrum PathTracer::estimate_direct_lighting_importance(const Ray& r, const Intersection& isect, Rng& rng_in) const {
+  Rng rng = rng_in;]])
+pt_mutant(3 one_bounce_copies_rng ${ref}
+  [[Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng) const {]]
+  [[Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng_in) const {
+  Rng rng = rng_in;]])

@@ -60,11 +60,25 @@ pt_mutant(4 depth_one_skipped ${ref} [[if (settings.max_ray_depth >= 1) {]] [[if
 # The first hit's ray starts with one bounce too many.
 pt_mutant(4 first_depth_plus_one ${ref}
   [[ray.depth = settings.max_ray_depth;]] [[ray.depth = settings.max_ray_depth + 1;]])
+# Roulette one bounce late: the first two bounces exempt (unbiased, less
+# variance than the contract's). Caught by RussianRoulette.DecidesFromTheSecondBounceOn.
+pt_mutant(4 rr_from_the_third_bounce ${ref}
+  [[const bool first_bounce = r.depth == settings.max_ray_depth;]]
+  [[const bool first_bounce = r.depth >= settings.max_ray_depth - 1;]])
 
-# ---- Randomness from elsewhere
-# The roulette coin from std::rand, not from the generator passed in: the
-# right probability, but not a function of the generator. Caught by the
-# replays (support/replayed_draws.h, the boundary's runs).
-pt_mutant(4 roulette_from_std_rand ${ref}
+# ---- Randomness only from the Rng passed in (each caught by PathRandomness.*) --------
+# Bounce directions from a static generator of the task's own.
+pt_mutant(4 bounce_own_generator ${ref}
+  [[Spectrum f = isect.bsdf->sample_f(frame.to_local(-r.d), &w_in, &pdf, rng);]]
+  [[static Rng own(12345);
+  Spectrum f = isect.bsdf->sample_f(frame.to_local(-r.d), &w_in, &pdf, own);]])
+# The roulette coin drawn with std::rand(): the rng passed in never sees it.
+pt_mutant(4 rr_coin_std_rand ${ref}
   [[if (!first_bounce && !rng.coin_flip(p)) return L;]]
-  [[if (!first_bounce && !(std::rand() / (RAND_MAX + 1.0) < p)) return L;]])
+  [[if (!first_bounce && !(std::rand() < p * RAND_MAX)) return L;]])
+# The camera ray's path traced with a copy of the generator: the rng passed in
+# never moves, so the pixel's next sample repeats this one's numbers.
+pt_mutant(4 global_copies_rng ${ref}
+  [[L += at_least_one_bounce_radiance(ray, isect, rng);]]
+  [[Rng copy = rng;
+    L += at_least_one_bounce_radiance(ray, isect, copy);]])

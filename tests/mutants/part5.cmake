@@ -95,7 +95,7 @@ pt_mutant(5 swapped_width_height ${p5} [[(x + u.x) / settings.width, (y + u.y) /
           [[(x + u.x) / settings.height, (y + u.y) / settings.width]])
 
 # Jitters with a generator of its own, seeded from the pixel.
-# Caught by PixelAdaptive.UsesOnlyTheRngItIsGiven (hidden).
+# Caught by PixelAdaptive.UsesOnlyTheRngItIsGiven.
 pt_mutant(5 own_rng ${p5} [[  auto next_sample = [&] {
     Vec2 u = settings.ns_aa == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
   auto next_sample = [&] {
@@ -144,3 +144,9 @@ pt_mutant(5 alloc_overspends_small_budget ${p5} [[if (budget < (long long)n) {]]
 
 # The quietest pixels first.
 pt_mutant(5 alloc_ascending ${p5} [[return r[a] > r[b];]] [[return r[a] < r[b];]])
+
+# The loop written as do { ... } while (n < max_samples) (here as the same
+# loop with its first test skipped): one sample even with a cap of 0 or less.
+# Caught by SampleAdaptively.ACapOfZeroOrLessTakesNoSample.
+pt_mutant(5 cap_zero_draws_once ${p5} [[  while (n < max_samples) {]]
+          [[  for (bool first = true; first || n < max_samples; first = false) {]])

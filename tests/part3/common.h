@@ -51,13 +51,15 @@ struct Lit {
 };
 
 // Builds the scene made by `add` (lights, occluders), adds the receiver at
-// (p, n), builds the BVH and aims at the receiver.
-inline Lit make_lit(const Vec3& p, const Vec3& n, const std::function<void(Scene&)>& add) {
+// (p, n) (glowing with receiver_emission, if given), builds the BVH and aims
+// at the receiver.
+inline Lit make_lit(const Vec3& p, const Vec3& n, const std::function<void(Scene&)>& add,
+                    const Spectrum& receiver_emission = Spectrum(0.0)) {
   Lit l;
   l.p = p;
   l.n = glm::normalize(n);
   add(l.scene);
-  add_receiver(l.scene, p, l.n, Spectrum(kAlbedo));
+  add_receiver(l.scene, p, l.n, Spectrum(kAlbedo), receiver_emission);
   l.scene.build();
   l.aim = aim_at(l.scene, p, l.n);
   return l;

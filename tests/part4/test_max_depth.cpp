@@ -10,6 +10,8 @@
 // solution passes with probability 1 (whatever its random numbers: the
 // mirrors are deterministic, and the card's direct light from a point light
 // is exact), up to rounding (relative 1e-6 allowed).
+#include <cmath>
+
 #include "common.h"
 #include "mirror_checks.h"
 #include "support/graded.h"
@@ -61,6 +63,48 @@ GRADED_TEST(RussianRoulette, FirstBounceIsAlwaysTaken, "P4T2", 2, Visible) {
                            "1e-3: the first bounce must not be subject to Russian roulette";
   EXPECT_TRUE(stats::mean_matches(st, furnace_bounces(0.5, 2, 2), kAlphaTest,
                                   "bounce 2 alone in the furnace (a = 0.5), rr_continue_prob = 1e-3"));
+}
+
+GRADED_TEST(RussianRoulette, DecidesFromTheSecondBounceOn, "P4T2", 1, Visible) {
+  // Roulette decides about the second bounce and every later one: no sooner
+  // (FirstBounceIsAlwaysTaken) and no later. A mirror chain of k mirrors at
+  // max_ray_depth k + 1 with p = 0.5 passes k - 1 roulettes (before bounces
+  // 2 .. k), so every estimate is either 0 (the path was ended) or exactly
+  // card / p^(k-1) (it survived each and was divided by p each time).
+  // Exempting two bounces leaves a path that only ever reaches card / p^(k-2)
+  // (and always card with one mirror less), which this rules out exactly.
+  // Of 200 estimates at least one of each kind is expected: a correct
+  // solution sees none survive with probability (1 - p^(k-1))^200 < 1e-24,
+  // none ended with probability below 1e-60.
+  const double p = 0.5;
+  for (const int mirrors : {2, 3}) {
+    for (const bool accumulate : {true, false}) {
+      const MirrorChain chain = make_mirror_chain(mirrors);
+      const RenderSettings s = chain_settings(mirrors + 1, p, accumulate);
+      const double survivor = chain.card_radiance / std::pow(p, mirrors - 1);
+      PathTracer tracer(chain.scene, s);
+      Rng rng(test::seed(4510 + 2 * mirrors + accumulate));
+      int ended = 0, survived = 0;
+      for (int i = 0; i < kRepeats; ++i) {
+        const Spectrum L = estimate_once(tracer, chain.first, Entry::AtLeastOneBounce, rng);
+        const bool grey = L.r == L.g && L.g == L.b;
+        if (grey && L.r == 0.0) {
+          ++ended;
+        } else if (grey && std::abs(L.r - survivor) <= 1e-6 * survivor) {
+          ++survived;
+        } else {
+          FAIL() << "mirror chain of " << mirrors << " mirrors, " << describe(s) << ": an estimate was " << L
+                 << ", expected 0 or card / p^" << mirrors - 1 << " = " << survivor << " (card's radiance "
+                 << chain.card_radiance << "): roulette applies before every bounce from the second on, "
+                 << mirrors - 1 << " times on this path"
+                 << (std::abs(L.r - survivor * p) <= 1e-6 * survivor ? " (this path passed one roulette too few)" : "");
+        }
+      }
+      EXPECT_GT(survived, 0) << "mirror chain of " << mirrors << " mirrors, " << describe(s) << ": no path survived";
+      EXPECT_GT(ended, 0) << "mirror chain of " << mirrors << " mirrors, " << describe(s)
+                          << ": no path was ended by roulette in " << kRepeats << " estimates";
+    }
+  }
 }
 
 }  // namespace

@@ -134,5 +134,21 @@ GRADED_TEST(PixelAdaptive, RaysPassThroughThePixel, "P5T1", 1, Visible) {
       << in << "\nwith ns_aa = 1 the ray goes through the pixel centre (5.5, 1.5); it crosses at " << q;
 }
 
+GRADED_TEST(PixelAdaptive, UsesOnlyTheRngItIsGiven, "P5T1", 0.5, Visible) {
+  // 16 samples of pixel (5, 1) (alternating 1, 0 never meets the rule);
+  // exact comparisons of the rays. Boundary: exact, fails only if the jitter
+  // ignores the rng passed in (or one number in 2^32 repeats).
+  const Scene scene = scene_with_camera();
+  const RenderSettings s = adaptive_settings(8, 6, 16, 4, 0.05);
+  EXPECT_TRUE(test::jitter_comes_from(
+      [&](Rng& rng) {
+        ScriptedTracer tracer(scene, s, alternating(Spectrum(1), Spectrum(0)));
+        tracer.raytrace_pixel_adaptive(5, 1, rng);
+        return tracer.rays;
+      },
+      test::seed(5104)))
+      << describe(ScriptedTracer(scene, s, alternating(Spectrum(1), Spectrum(0))), 5, 1);
+}
+
 }  // namespace
 }  // namespace pt

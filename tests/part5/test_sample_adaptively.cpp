@@ -139,5 +139,19 @@ GRADED_TEST(SampleAdaptively, RarelyLitPixelStopsAfterBlackFirstBatch, "P5T1", 0
       << o.inputs << "\nreturned " << o.estimate.radiance << ": the 16 samples taken are all black";
 }
 
+GRADED_TEST(SampleAdaptively, ACapOfZeroOrLessTakesNoSample, "P5T1", 0.5, Visible) {
+  // "Never call next_sample more than max_samples times": with a cap of 0, or
+  // below, not even once (a do-while loop draws one sample before it looks at
+  // the cap). No sample: n = 0 and the mean of nothing is black, not 0/0.
+  // Exact: no statistics.
+  for (int cap : {0, -1, -64}) {
+    Outcome o = run_script(constant(grey(0.5)), cap, 8, 0.05);
+    EXPECT_EQ(o.calls, 0) << o.inputs << "\nmax_samples <= 0: next_sample must not be called at all";
+    EXPECT_EQ(o.estimate.num_samples, 0) << o.inputs << "\nno sample taken: the count is 0";
+    EXPECT_TRUE(o.estimate.radiance == Spectrum(0.0))
+        << o.inputs << "\nreturned " << o.estimate.radiance << ": with no sample the estimate is black (0, 0, 0)";
+  }
+}
+
 }  // namespace
 }  // namespace pt

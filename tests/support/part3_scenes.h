@@ -19,14 +19,16 @@ using test::Aim;  // support/scene_builders.h
 // light it with (every light and occluder is at least 0.1 away from it).
 constexpr double kReceiverSize = 0.02;
 
-// Adds the receiver: a diffuse square of the given albedo around p,
-// facing n (a quad whose cross(ex, ey) is n). Call before scene.build().
-inline const BSDF* add_receiver(Scene& s, const Vec3& p, const Vec3& n, const Spectrum& albedo) {
+// Adds the receiver: a diffuse square of the given albedo (and emission,
+// none unless given) around p, facing n (a quad whose cross(ex, ey) is n).
+// Call before scene.build().
+inline const BSDF* add_receiver(Scene& s, const Vec3& p, const Vec3& n, const Spectrum& albedo,
+                                const Spectrum& emission = Spectrum(0.0)) {
   const Vec3 nn = glm::normalize(n);
   const Vec3 a = std::abs(nn.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
   const Vec3 ex = glm::normalize(glm::cross(a, nn)) * kReceiverSize;
   const Vec3 ey = glm::cross(nn, ex);  // cross(ex, ey) is along n
-  const BSDF* b = s.add_bsdf<DiffuseBSDF>(albedo);
+  const BSDF* b = s.add_bsdf<DiffuseBSDF>(albedo, emission);
   // Off-centre, so that p lies inside one triangle, away from the diagonal
   // the quad's two triangles share (where a hit is a matter of rounding).
   s.add_quad(p + 0.15 * ex - 0.1 * ey, ex, ey, b);
