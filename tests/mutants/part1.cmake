@@ -65,11 +65,13 @@ pt_mutant(1 cam_no_clip_range ${p1} [[  r.min_t = near_clip;
 
 # Every sample through the pixel's bottom-left corner.
 # Caught by PixelSampling.SingleSampleGoesThroughPixelCentre, PixelSampling.SamplesAreJitteredAcrossThePixel,
-#   PixelSampling.JitterComesFromTheRngPassedIn.
+#   PixelSampling.JitterComesFromTheRngPassedIn,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_corner ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[Vec2 u(0.0);]])
 
 # No jitter: every sample through the pixel centre.
-# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel, PixelSampling.JitterComesFromTheRngPassedIn.
+# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel, PixelSampling.JitterComesFromTheRngPassedIn,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_no_jitter ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[Vec2 u(0.5);]])
 
 # Jitters the single sample too (ns_aa = 1 must go through the centre).
@@ -77,24 +79,28 @@ pt_mutant(1 px_no_jitter ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]]
 pt_mutant(1 px_jitter_single_sample ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[Vec2 u = rng.uniform2();]])
 
 # Jitters around the pixel's corner, [-1/2, 1/2)^2, instead of inside the pixel.
-# Caught by PixelSampling.SamplesStayInsideTheirPixel, PixelSampling.SamplesAreJitteredAcrossThePixel.
+# Caught by PixelSampling.SamplesStayInsideTheirPixel, PixelSampling.SamplesAreJitteredAcrossThePixel,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_jitter_around_corner ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]]
   [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2() - 0.5;]])
 
 # One random number for both axes: samples lie on the pixel's diagonal.
-# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel.
+# Caught by PixelSampling.SamplesAreJitteredAcrossThePixel,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_same_random_both_axes ${p1} [[Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]]
   [[Vec2 u = n == 1 ? Vec2(0.5) : Vec2(rng.uniform());]])
 
 # Divides y by the image width.
 # Caught by PixelSampling.SingleSampleGoesThroughPixelCentre, PixelSampling.SamplesStayInsideTheirPixel,
-#   PixelSampling.SamplesAreJitteredAcrossThePixel.
+#   PixelSampling.SamplesAreJitteredAcrossThePixel,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_width_for_y ${p1} [[(y + u.y) / settings.height]] [[(y + u.y) / settings.width]])
 
 # Off by one: ns_aa + 1 samples.
 # Caught by PixelSampling.TakesExactlyNsAaSamples, PixelSampling.AveragesTheSamples,
 #   PixelSampling.SingleSampleGoesThroughPixelCentre, PixelSampling.SamplesStayInsideTheirPixel,
-#   PixelSampling.SamplesAreJitteredAcrossThePixel.
+#   PixelSampling.SamplesAreJitteredAcrossThePixel,
+#   PixelSampling.EstimatesDrawFromTheRngPassedIn, PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_loop_off_by_one ${p1} [[for (int i = 0; i < n; ++i)]] [[for (int i = 0; i <= n; ++i)]])
 
 # Returns the sum of the samples instead of their mean.
@@ -112,7 +118,8 @@ pt_mutant(1 px_count_not_recorded ${p1} [[return {sum / double(n), n};]] [[retur
 # Jitters with a generator of its own, seeded from the pixel: every sample
 # lands in its pixel and is uniform, but the image no longer depends on the
 # render's seed and the rng passed in is never used.
-# Caught by PixelSampling.JitterComesFromTheRngPassedIn.
+# Caught by PixelSampling.JitterComesFromTheRngPassedIn,
+#   PixelSampling.EverySampleIsUniformInThePixel.
 pt_mutant(1 px_own_rng ${p1} [[  for (int i = 0; i < n; ++i) {
     Vec2 u = n == 1 ? Vec2(0.5) : rng.uniform2();]] [[  Rng own = Rng::for_pixel(0, uint32_t(x), uint32_t(y));
   for (int i = 0; i < n; ++i) {
@@ -144,18 +151,21 @@ pt_mutant(1 px_estimate_own_rng ${p1} [[    sum += est_radiance_global_illuminat
 # in Moller-Trumbore, written in its terms.
 
 # Exchanges the weights of n2 and n3 in the interpolated normal.
-# Caught by TriangleIntersect.InterpolatedNormal.
+# Caught by TriangleIntersect.InterpolatedNormal,
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_swapped_normal_weights ${p1} [[hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3()]]
   [[hit.b0 * n1() + hit.b2 * n2() + hit.b1 * n3()]])
 
 # Forgets to normalise the interpolated normal.
-# Caught by TriangleIntersect.InterpolatedNormal.
+# Caught by TriangleIntersect.InterpolatedNormal,
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_normal_not_normalised ${p1} [[isect->n = glm::normalize(hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3());]]
   [[isect->n = hit.b0 * n1() + hit.b1 * n2() + hit.b2 * n3();]])
 
 # Stores the barycentrics in the wrong order.
 # Caught by TriangleIntersect.Barycentrics, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
-#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_barycentrics_rotated ${p1} [[isect->barycentric = Vec3(hit.b0, hit.b1, hit.b2);]]
   [[isect->barycentric = Vec3(hit.b1, hit.b2, hit.b0);]])
 
@@ -174,21 +184,25 @@ pt_mutant(1 tri_strict_one_edge ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (
 # beyond it.
 # Caught by TriangleIntersect.MissesBesideEachEdge,
 #   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
-#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_no_sum_test ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
   [[if ((v < 0.0 || w < 0.0) && (v > 0.0 || w > 0.0)) return false;]])
 
 # Ignores min_t: hits behind the origin (and before the near clip).
-# Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
+# Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_ignores_min_t ${p1} [[t >= r.min_t && ]] [[]])
 
 # Ignores max_t: farther triangles replace the nearest hit.
 # Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.KeepsNearerHit,
-#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
+#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_ignores_max_t ${p1} [[ && t <= r.max_t]] [[]])
 
 # Does not shrink r.max_t on a hit.
-# Caught by TriangleIntersect.ShrinksMaxT, TriangleIntersect.KeepsNearerHit.
+# Caught by TriangleIntersect.ShrinksMaxT, TriangleIntersect.KeepsNearerHit,
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_no_max_t_update ${p1} [[  r.max_t = hit.t;
 ]] [[]])
 
@@ -198,7 +212,8 @@ pt_mutant(1 tri_no_max_t_update ${p1} [[  r.max_t = hit.t;
 #   TriangleIntersect.SharedEdgeCannotSlipThrough (hidden),
 #   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
 #   TriangleIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
-#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden).
+#   TriangleIntersect.TinyHugeAndSliverTriangles (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_backface_culling ${p1} [[if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;]]
   [[if (u < 0.0 || v < 0.0 || w < 0.0) return false;]])
 
@@ -215,7 +230,8 @@ pt_mutant(1 tri_nan_unsafe ${p1}
 
 # has_intersection tests the whole line, forgetting the ray's t range.
 # Caught by TriangleIntersect.RespectsTRange, TriangleIntersect.HasIntersectionAgreesWithIntersect,
-#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden).
+#   TriangleIntersect.RandomRaysMatchIndependentSolver (hidden),
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_any_hit_ignores_range ${p1} [[bool Triangle::has_intersection(const Ray& r) const {
   TriangleHit hit;
   return watertight(r, p1(), p2(), p3(), &hit);]]
@@ -226,7 +242,8 @@ pt_mutant(1 tri_any_hit_ignores_range ${p1} [[bool Triangle::has_intersection(co
   return watertight(line, p1(), p2(), p3(), &hit);]])
 
 # Does not record the primitive and BSDF hit.
-# Caught by TriangleIntersect.RecordsPrimitiveAndBsdf, TriangleIntersect.KeepsNearerHit.
+# Caught by TriangleIntersect.RecordsPrimitiveAndBsdf, TriangleIntersect.KeepsNearerHit,
+#   TriangleIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 tri_no_primitive_bsdf ${p1} [[  isect->primitive = this;
   isect->bsdf = get_bsdf();
   return true;
@@ -264,7 +281,8 @@ pt_mutant(1 tri_has_shrinks_max_t ${p1} [[  TriangleHit hit;
 # Roots not put in order (t1 is the larger root whenever b < 0).
 # Caught by SphereTest.RootsInOrder, SphereTest.NonUnitDirection, SphereIntersect.NearRootFromOutside,
 #   SphereIntersect.RespectsTRange, SphereIntersect.KeepsNearerHit, SphereIntersect.OutwardUnitNormal,
-#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_roots_unordered ${p1} [[  if (t1 > t2) std::swap(t1, t2);
 ]] [[]])
 
@@ -272,13 +290,15 @@ pt_mutant(1 sph_roots_unordered ${p1} [[  if (t1 > t2) std::swap(t1, t2);
 # Caught by SphereIntersect.NearRootFromOutside, SphereIntersect.RespectsTRange,
 #   SphereIntersect.KeepsNearerHit, SphereIntersect.OutwardUnitNormal,
 #   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
-#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
+#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_far_root ${p1} [[*t = t1;]] [[*t = t2;]])
 
 # Tries only the near root: from inside the sphere (t1 < 0) it misses.
 # Caught by SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.RespectsTRange,
 #   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
-#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
+#   SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_near_root_only ${p1} [[  if (t2 >= ray.min_t && t2 <= ray.max_t) {
     *t = t2;
     return true;
@@ -289,19 +309,22 @@ pt_mutant(1 sph_near_root_only ${p1} [[  if (t2 >= ray.min_t && t2 <= ray.max_t)
 # Caught by SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.SphereBehindMisses,
 #   SphereIntersect.RespectsTRange, SphereIntersect.TinyAndHugeSpheres (hidden),
 #   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
-#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_ignores_min_t ${p1} [[if (t1 >= ray.min_t && t1 <= ray.max_t)]] [[if (t1 <= ray.max_t)]])
 
 # Inward normal.
 # Caught by SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden),
-#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_inward_normal ${p1} [[glm::normalize(ray.at(t) - o)]] [[glm::normalize(o - ray.at(t))]])
 
 # Normal not divided by the radius.
 # Caught by SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.RandomRaysMatchClosedForm (hidden),
-#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_normal_not_unit ${p1} [[isect->n = glm::normalize(ray.at(t) - o);]] [[isect->n = ray.at(t) - o;]])
 
 # Treats a zero discriminant as a miss: tangent rays slip past.
@@ -312,7 +335,8 @@ pt_mutant(1 sph_tangent_misses ${p1} [[if (disc < 0.0) return false;]] [[if (dis
 # Caught by SphereTest.RootsInOrder, SphereTest.NonUnitDirection, SphereIntersect.NearRootFromOutside,
 #   SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.RespectsTRange, SphereIntersect.KeepsNearerHit,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.TinyAndHugeSpheres (hidden),
-#   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden).
+#   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_no_sqrt ${p1} [[std::copysign(std::sqrt(disc), b)]] [[std::copysign(disc, b)]])
 
 # Assumes a unit direction (a = 1).
@@ -325,19 +349,22 @@ pt_mutant(1 sph_assumes_unit_direction ${p1} [[double a = glm::dot(ray.d, ray.d)
 #   SphereIntersect.TangentRayTouches, SphereIntersect.OriginInsideHitsFarRoot,
 #   SphereIntersect.OutwardUnitNormal, SphereIntersect.TinyAndHugeSpheres (hidden),
 #   SphereIntersect.RandomRaysMatchClosedForm (hidden), SphereIntersect.HitsExactlyAtTheEndsOfTheRange (hidden),
-#   SphereTest.TangentRayFromAPointOnTheSphere (hidden).
+#   SphereTest.TangentRayFromAPointOnTheSphere (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_radius_not_squared ${p1} [[double c = glm::dot(oc, oc) - r2;]] [[double c = glm::dot(oc, oc) - r;]])
 
 # Computes the discriminant in single precision: roots good to about 1e-7
 # at unit scale, and meaningless for a tiny sphere far away.
 # Caught by SphereTest.RootsInOrder, SphereTest.NonUnitDirection, SphereIntersect.NearRootFromOutside,
 #   SphereIntersect.OriginInsideHitsFarRoot, SphereIntersect.OutwardUnitNormal,
-#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden).
+#   SphereIntersect.TinyAndHugeSpheres (hidden), SphereIntersect.RandomRaysMatchClosedForm (hidden),
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_float_discriminant ${p1} [[double disc = b * b - 4.0 * a * c;]]
   [[double disc = float(b) * float(b) - 4.0f * float(a) * float(c);]])
 
 # Does not shrink ray.max_t on a hit.
-# Caught by SphereIntersect.KeepsNearerHit.
+# Caught by SphereIntersect.KeepsNearerHit,
+#   SphereIntersect.HitRecordOnHitAndMiss.
 pt_mutant(1 sph_no_max_t_update ${p1} [[  ray.max_t = t;
 ]] [[]])
 

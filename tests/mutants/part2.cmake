@@ -7,7 +7,8 @@ set(p2 reference/part2_bvh.cpp)
 
 # No min/max swap: every slab with a negative direction component comes out
 # reversed and the box is missed. Caught by BBoxSlab.HitsAndMisses (and every
-# brute-force comparison).
+# brute-force comparison),
+#   BBoxSlab.AxisParallelRays, BVHCorrectness.DeepTreeManyDeferredSubtrees, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 slab_no_swap ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);]] [[(void)0;  // no swap]])
 
 # Swaps when t_near > t_far instead of by the sign of the direction: with a
@@ -20,7 +21,8 @@ pt_mutant(2 slab_swap_by_t ${p2} [[if (inv_d[a] < 0.0) std::swap(t_near, t_far);
 
 # Strict comparison: t0 == t1 counts as a miss, so every box of zero thickness
 # (a flat mesh) is missed. Caught by BBoxSlab.FlatBoxes,
-# BVHCorrectness.ClosestHitMatchesLinearScanOnMeshes (flat grids).
+# BVHCorrectness.ClosestHitMatchesLinearScanOnMeshes (flat grids),
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees.
 pt_mutant(2 slab_strict_flat ${p2} [[return t0 <= t1;]] [[return t0 < t1;]])
 
 # std::max(t_near, t0) with the NaN first: 0 * inf = NaN (origin on a slab
@@ -32,7 +34,8 @@ pt_mutant(2 slab_nan_poison ${p2} [[    if (t_near > t0) t0 = t_near;
 
 # Works on copies of t0 and t1: the right answer, but the caller's interval
 # is never narrowed (so a traversal could not order children by entry).
-# Caught by every BBoxSlab test that checks the narrowed interval on a hit.
+# Caught by every BBoxSlab test that checks the narrowed interval on a hit,
+#   BBoxSlab.AxisParallelRays.
 pt_mutant(2 slab_not_narrowed ${p2}
           [[bool BBox::intersect(const Ray& r, double& t0, double& t1) const { return slab_test(*this, r.o, 1.0 / r.d, t0, t1); }]]
           [[bool BBox::intersect(const Ray& r, double& t0, double& t1) const {
@@ -42,7 +45,8 @@ pt_mutant(2 slab_not_narrowed ${p2}
 
 # Starts from the first slab instead of the incoming [t0, t1]: boxes behind
 # the origin or beyond max_t count as hits. Caught by BBoxSlab.HitsAndMisses
-# (box behind the origin), BBoxSlab.NarrowsInterval.
+# (box behind the origin), BBoxSlab.NarrowsInterval,
+#   BBoxSlab.AxisParallelRays, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 slab_ignores_interval ${p2} [[    if (t_near > t0) t0 = t_near;
     if (t_far < t1) t1 = t_far;]] [[    if (a == 0 || t_near > t0) t0 = t_near;
     if (a == 0 || t_far < t1) t1 = t_far;]])
@@ -50,17 +54,20 @@ pt_mutant(2 slab_ignores_interval ${p2} [[    if (t_near > t0) t0 = t_near;
 # --- P2T1, the build ------------------------------------------------------------
 
 # The node's box misses the last primitive of its range. Caught by
-# BVHStructure.InvariantsOnSoup (box not tight), brute-force comparisons.
+# BVHStructure.InvariantsOnSoup (box not tight), brute-force comparisons,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees, BVHQuality.SahCostWithOneHugeTriangle, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 bbox_misses_last ${p2} [[node->bb.expand(prims_[i].box);]]
           [[if (i + 1 != end) node->bb.expand(prims_[i].box);]])
 
 # The node's box is the box of the centroids, not of the primitives. Caught by
 # BVHStructure.InvariantsOnSoup (a primitive sticks out of its leaf's box),
-# brute-force comparisons.
+# brute-force comparisons,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees, BVHQuality.SahCostWithOneHugeTriangle, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 bbox_of_centroids ${p2} [[node->bb.expand(prims_[i].box);]] [[node->bb.expand(prims_[i].centroid);]])
 
 # The node stores a count where an index belongs. Caught by
-# BVHStructure.InvariantsOnSoup (ranges do not tile), brute force.
+# BVHStructure.InvariantsOnSoup (ranges do not tile), brute force,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees, BVHQuality.SahCostWithOneHugeTriangle, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 wrong_node_range ${p2} [[node->end = first_index_ + end;]] [[node->end = end - begin;]])
 
 # No fallback when no plane separates the centroids: a leaf of everything
@@ -126,7 +133,8 @@ pt_mutant(2 leaf_returns_first_hit ${p2} [[for (size_t i = node->start; i < node
 
 # `hit = ...` for `hit |= ...`: a miss later in the leaf forgets the hit
 # found before it (isect still holds it, but the query reports a miss).
-# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
+# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees.
 pt_mutant(2 leaf_hit_overwritten ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
           [[hit = primitives_[i]->intersect(r, isect);]])
 
@@ -140,7 +148,8 @@ pt_mutant(2 returns_first_leaf_hit ${p2} [[hit |= primitives_[i]->intersect(r, i
 # Tests primitives against a copy of the ray: max_t never shrinks, so a later,
 # farther hit overwrites a nearer one (the traversal form of "forgetting to
 # shrink max_t"; Triangle::intersect does shrink the ray it is given).
-# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup.
+# Caught by BVHCorrectness.ClosestHitMatchesLinearScanOnSoup,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees.
 pt_mutant(2 ray_copy_no_shrink ${p2} [[hit |= primitives_[i]->intersect(r, isect);]]
           [[{
         Ray copy = r;
@@ -200,7 +209,8 @@ pt_mutant(2 far_child_first ${p2} [[if (b_t0 < a_t0) e = {2, b, a, a_t0};]] [[if
 pt_mutant(2 unordered_children ${p2} [[if (b_t0 < a_t0) e = {2, b, a, a_t0};]] [[if (false) e = {2, b, a, a_t0};]])
 
 # any-hit never looks in the second child when the ray enters both. Caught by
-# BVHCorrectness.AnyHitAgreesWithLinearScan.
+# BVHCorrectness.AnyHitAgreesWithLinearScan,
+#   BVHCorrectness.DeepTreeManyDeferredSubtrees, BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 anyhit_ignores_second_child ${p2} [[stack[size++] = e.far;]] [[(void)e.far;  // never visited]])
 
 # any-hit tests the whole leaf before it returns. Caught by
@@ -213,7 +223,8 @@ pt_mutant(2 anyhit_no_early_exit ${p2} [[      for (size_t i = node->start; i < 
 
 # any-hit descends into both children without testing their boxes: the right
 # answer, from brute-force work (every primitive of a ray that hits nothing).
-# Caught by BVHTraversal.AnyHitTestsOnlyLeavesTheRayEnters (hidden).
+# Caught by BVHTraversal.AnyHitTestsOnlyLeavesTheRayEnters (hidden),
+#   BVHTraversal.AnyHitStaysWithinTheRayInterval.
 pt_mutant(2 anyhit_no_box_tests ${p2} [[      ChildrenEntered e = enter_children(*node, r, inv_d);
       work.node_visits += 2;
       if (e.count == 2) {

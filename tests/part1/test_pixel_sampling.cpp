@@ -229,8 +229,8 @@ GRADED_TEST_F(PixelSampling, JitterComesFromTheRngPassedIn, "P1T2", 0.5, Visible
 // as the others (a loop that sends one sample through the centre and jitters
 // the rest weighs the centre 1/N extra: a biased pixel). Pearson's chi-square
 // over 17 cells of the pixel: a 4 x 4 grid, minus a centre square of side 0.1,
-// which is the 17th cell (expected counts: 500 samples x area; the centre
-// cell expects 5, the grid's cells 31.1 or 31.25), once with N = 2 (250
+// which is the 17th cell (expected counts: samples x area; the centre cell
+// expects 5 or 5.1, the grid's cells 30 to 32), once with N = 2 (250
 // pixels) and once with N = 16 (32 pixels), each at alpha = 5e-6 (critical
 // value 54.1 at 16 degrees of freedom): a correct loop fails the test with
 // probability 1e-5 (Sidak). Measured over seed offsets 0 to 19: the
@@ -248,7 +248,10 @@ GRADED_TEST_F(PixelSampling, EverySampleIsUniformInThePixel, "P1T2", 0.5, Visibl
     std::vector<double> observed(17, 0.0), expected(17, 0.0);
     const double n = double(run.ns) * run.pixels;
     for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i) expected[j * 4 + i] = n / 16.0 - ((i == 1 || i == 2) && (j == 1 || j == 2) ? n * side * side / 4.0 : 0.0);
+      for (int i = 0; i < 4; ++i) {
+        const bool touches_centre = (i == 1 || i == 2) && (j == 1 || j == 2);  // loses a quarter of the centre cell
+        expected[j * 4 + i] = n / 16.0 - (touches_centre ? n * side * side / 4.0 : 0.0);
+      }
     expected[16] = n * side * side;
     for (int k = 0; k < run.pixels; ++k) {
       ScriptedTracer t = tracer(run.ns);
@@ -268,7 +271,8 @@ GRADED_TEST_F(PixelSampling, EverySampleIsUniformInThePixel, "P1T2", 0.5, Visibl
     stats::ChiSquareResult chi = stats::chi_square_test(observed, expected, 5e-6);
     testing::Test::RecordProperty("chi_square_ns" + std::to_string(run.ns), std::to_string(chi.statistic));
     EXPECT_TRUE(chi.passed()) << "The samples of a pixel are not uniform in it: " << observed[16] << " of " << n
-                              << " landed in the square of side " << side << " around the centre (expected " << expected[16]
+                              << " landed in the square of side " << side << " around the centre (expected "
+                              << expected[16]
                               << "). Every sample, the first one too, goes through (x + u, y + v) with (u, v) = "
                                  "rng.uniform2(); only ns_aa == 1 uses the centre.\n"
                               << chi.describe() << "\n" << where(x, y, run.ns) << " (" << run.pixels << " calls)";

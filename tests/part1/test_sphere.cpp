@@ -223,7 +223,8 @@ GRADED_TEST(SphereIntersect, HitRecordOnHitAndMiss, "P1T4", 0.5, Visible) {
   TriangleSet others;
   const Triangle& other = others.add(Vec3(9, 9, 9), Vec3(10, 9, 9), Vec3(9, 10, 9));
   const Intersection before = earlier_hit(&other, other.get_bsdf());
-  const Approach cases[] = {approach(Vec3(0.3, -0.4, 1.0), 6.0, 1.5, 0.4), approach(Vec3(-1.0, 0.2, 0.1), 0.5, 0.7, 2.0)};
+  const Approach cases[] = {approach(Vec3(0.3, -0.4, 1.0), 6.0, 1.5, 0.4),   // from outside
+                            approach(Vec3(-1.0, 0.2, 0.1), 0.5, 0.7, 2.0)};  // from inside
   for (const Approach& a : cases) {
     const Ray base = ray_past(s, a);
     const double t = near_root(s, a) >= 0.0 ? near_root(s, a) : far_root(s, a);
