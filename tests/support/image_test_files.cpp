@@ -1,0 +1,49 @@
+#include "support/image_test_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "io/image_file.h"
+
+namespace pt::image_test {
+
+Image p_value_image(const Result& r) {
+  Image img(r.width, r.height);
+  std::vector<double> p(size_t(r.width) * r.height, 1.0);
+  for (const Region& g : r.regions)
+    for (int y = g.y0; y < g.y1; ++y)
+      for (int x = g.x0; x < g.x1; ++x) p[size_t(y) * r.width + x] = std::min(p[size_t(y) * r.width + x], g.p);
+  const double top = -std::log10(r.alpha_each);
+  for (size_t i = 0; i < p.size(); ++i)
+    img.pixels[i] = p[i] < r.alpha_each ? Spectrum(1, 0, 0)
+                                         : Spectrum(std::clamp(-std::log10(std::max(p[i], 1e-300)) / top, 0.0, 1.0));
+  return img;
+}
+
+std::string write_failure_images(const Result& r) {
+  if (r.render.pixels.empty() || r.reference.pixels.empty()) return "";
+  namespace fs = std::filesystem;
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : r.spec.scene;
+  const char* env = std::getenv("PT_IMAGE_TEST_DIR");
+  const fs::path dir = fs::path(env && *env ? env : "image_test_failures") / name;
+  try {
+    fs::create_directories(dir);
+    write_png((dir / "render.png").string(), r.render);
+    write_png((dir / "reference.png").string(), r.reference);
+    write_exr((dir / "render.exr").string(), r.render);
+    write_exr((dir / "reference.exr").string(), r.reference);
+    write_png((dir / "difference.png").string(), difference_image(r.render, r.reference));
+    write_png((dir / "p_values.png").string(), p_value_image(r));
+  } catch (const std::exception& e) {
+    return "; no images written (" + std::string(e.what()) + ")";
+  }
+  return "; images in " + dir.string() +
+         "/: render.png, reference.png (block-averaged to this size), difference.png (|illuminance difference|, "
+         "false colour to its 99th percentile), p_values.png (each pixel's smallest region p-value: black p = 1, "
+         "white at the threshold, red below it)";
+}
+
+}  // namespace pt::image_test
