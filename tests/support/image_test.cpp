@@ -23,27 +23,44 @@ constexpr const char* kChannel[3] = {"red", "green", "blue"};
 constexpr double kRounding = 1e-6;  // relative, per pixel: the stored mean is float (reference_check.h)
 
 struct Reference {
-  Image mean, variance;  // block averages; variance of the block-averaged stored mean itself
+  Image mean;      // block averages of the stored mean
+  Image variance;  // the noise of that block average itself
+  Image weight;    // each pixel's weight in a region's sum: 1 / (its per-sample variance + a floor)
+  Spectrum floor;  // that floor, per channel
 };
 
 // Each test pixel covers k x k stored pixels: its expected value is their
-// mean, and the stored mean's noise there is mean(sd^2) / (N k^2).
+// mean, and the stored mean's noise there is mean(sd^2) / (N k^2). One sample
+// of the test pixel is a sample of a uniformly chosen stored pixel, so its
+// variance is mean(sd^2) + the variance of the stored means over the block
+// (the law of total variance): the solution's noise at this size, which sets
+// the weights. Weighting by inverse variance keeps a few noisy pixels (the
+// edge of a light seen directly, fireflies) from drowning a region's sum;
+// the floor, 1% of the channel's image mean per sample, keeps noise-free
+// pixels from taking all the weight. The weights come from the stored image
+// only, never from the render, so the sum stays one of independent
+// zero-mean terms under the null hypothesis, whatever the render's noise.
 Reference block_average(const library::ReferenceImage& ref, int k) {
   const int w = ref.mean.width / k, h = ref.mean.height / k;
-  Reference out{Image(w, h), Image(w, h)};
-  const double n = ref.model.reference_samples;
+  Reference out{Image(w, h), Image(w, h), Image(w, h), Spectrum(0.0)};
+  const double n = ref.model.reference_samples, kk = double(k) * k;
+  Spectrum image_mean(0.0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      Spectrum sum(0.0), sd2(0.0);
+      Spectrum sum(0.0), sum2(0.0), sd2(0.0);
       for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
-          sum += ref.mean.at(x * k + i, y * k + j);
-          const Spectrum sd = ref.sd.at(x * k + i, y * k + j);
-          sd2 += sd * sd;
+          const Spectrum r = ref.mean.at(x * k + i, y * k + j), sd = ref.sd.at(x * k + i, y * k + j);
+          sum += r, sum2 += r * r, sd2 += sd * sd;
         }
-      out.mean.at(x, y) = sum / double(k * k);
-      out.variance.at(x, y) = sd2 / (double(k * k) * k * k * n);
+      const Spectrum mean = sum / kk;
+      out.mean.at(x, y) = mean;
+      out.variance.at(x, y) = sd2 / (kk * kk * n);
+      out.weight.at(x, y) = sd2 / kk + glm::max(sum2 / kk - mean * mean, Spectrum(0.0));  // per-sample variance, for now
+      image_mean += mean / double(w * h);
     }
+  out.floor = 1e-4 * image_mean * image_mean + Spectrum(1e-12);
+  for (Spectrum& v : out.weight.pixels) v = Spectrum(1.0) / (v + out.floor);
   return out;
 }
 
@@ -54,30 +71,34 @@ Region test_region(const std::vector<Image>& renders, const Image& mean, const R
   g.x0 = col * mean.width / grid, g.x1 = (col + 1) * mean.width / grid;
   g.y0 = row * mean.height / grid, g.y1 = (row + 1) * mean.height / grid;
   const double k = double(renders.size());
-  double diff = 0, reference = 0, var = 0, var2_over_dof = 0, rounding = 0;
+  double diff = 0, reference = 0, weighted_diff = 0, weighted_reference = 0, var = 0, var2_over_dof = 0,
+         rounding = 0;
   for (int y = g.y0; y < g.y1; ++y)
     for (int x = g.x0; x < g.x1; ++x) {
-      const double r = ref.mean.at(x, y)[c], m = mean.at(x, y)[c];
+      const double r = ref.mean.at(x, y)[c], m = mean.at(x, y)[c], w = ref.weight.at(x, y)[c];
       double s2 = 0;  // the sample variance of the pixel's K values
       for (const Image& img : renders) s2 += (img.at(x, y)[c] - m) * (img.at(x, y)[c] - m);
       s2 /= k - 1;
-      const double v = s2 / k;
+      const double v = w * w * s2 / k;
       diff += m - r;
       reference += r;
-      var += v + ref.variance.at(x, y)[c];
+      weighted_diff += w * (m - r);
+      if (w * ref.floor[c] < 0.5) weighted_reference += w * r;  // noisy pixels only: see relative_error
+      var += v + w * w * ref.variance.at(x, y)[c];
       var2_over_dof += v * v / (k - 1);  // the stored variance is known: no dof term
-      rounding += kRounding * std::abs(r) + 1e-12;
+      rounding += w * (kRounding * std::abs(r) + 1e-12);
     }
   const double pixels = double(g.x1 - g.x0) * (g.y1 - g.y0);
   g.mean_difference = diff / pixels;
   g.mean_reference = reference / pixels;
-  const double excess = std::max(0.0, std::abs(diff) - rounding);
+  g.relative_error = weighted_reference > 0.0 ? std::sqrt(var) / weighted_reference : INFINITY;
+  const double excess = std::max(0.0, std::abs(weighted_diff) - rounding);
   if (excess == 0.0) return g;  // t 0, p 1
   if (var <= 0.0) {
-    g.t = std::copysign(INFINITY, diff), g.p = 0.0;  // noise-free on both sides: any difference is real
+    g.t = std::copysign(INFINITY, weighted_diff), g.p = 0.0;  // noise-free on both sides: any difference is real
     return g;
   }
-  g.t = std::copysign(excess / std::sqrt(var), diff);
+  g.t = std::copysign(excess / std::sqrt(var), weighted_diff);
   // Welch-Satterthwaite; at least K - 1 (one pixel's), at most unbounded (the
   // stored variance alone).
   g.dof = var2_over_dof > 0.0 ? std::max(k - 1.0, var * var / var2_over_dof) : 1e9;
@@ -106,6 +127,17 @@ const Region& Result::worst() const {
   return *std::min_element(regions.begin(), regions.end(), [](const Region& a, const Region& b) { return a.p < b.p; });
 }
 
+double Result::detectable_change() const {
+  // A change of every pixel by the same factor 1 + d moves a region's weighted
+  // sum by d times its weighted reference: caught 99% of the time once that
+  // is (threshold + z_0.99) standard errors, in the best-measured channel.
+  const double threshold = stats::normal_quantile(1.0 - alpha_each / 2.0) + stats::normal_quantile(0.99);
+  double best = INFINITY;
+  for (const Region& g : regions)
+    if (g.grid == 1) best = std::min(best, threshold * g.relative_error);
+  return best;
+}
+
 bool Result::passed() const { return error.empty() && nonfinite == 0 && worst().p >= alpha_each; }
 
 std::string Result::describe() const {
@@ -120,6 +152,8 @@ std::string Result::describe() const {
     << worst().describe(width, height) << "; each of the " << regions.size() << " region tests at alpha "
     << alpha_each << " (Sidak share of " << kAlphaFamily << "), " << failing << " below it";
   if (nonfinite) s << "; " << nonfinite << " NaN or infinite pixels";
+  s << "; power: scaling the noisy pixels of the whole image by " << 100.0 * detectable_change()
+    << "% fails with probability 0.99";
   s << " [" << seconds << " s]";
   return s.str();
 }

@@ -21,9 +21,11 @@
 //
 // The test. Regions at three scales, per channel: the whole image, a 2 x 2
 // and a 4 x 4 grid (21 regions, 63 tests), each a Welch t test of
-//   t = sum_G (T - R) / sqrt(sum_G (s_p^2 / K + ref_var_p)),
+//   t = sum_G w_p (T - R) / sqrt(sum_G w_p^2 (s_p^2 / K + ref_var_p)),
 // with Welch-Satterthwaite degrees of freedom (the per-pixel variances are
-// estimated from K values each, pooled over the region's pixels). No test of
+// estimated from K values each, pooled over the region's pixels). The
+// weights w_p are the inverse of the solution's per-sample variance at this
+// size, from the stored images alone (image_test.cpp). No test of
 // single pixels: at a few samples per pixel a pixel's mean is far from normal
 // (a firefly is one sample), and a per-pixel z at a Sidak-corrected 5 sigma
 // would fail correct renders far more often than it claims; a region sums
@@ -62,7 +64,13 @@ struct Region {
   int grid = 1, col = 0, row = 0;  // cell (col, row) of a grid x grid division, row 0 at the top
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   int channel = 0;
-  double mean_difference = 0, mean_reference = 0, t = 0, dof = 0, p = 1;
+  double mean_difference = 0, mean_reference = 0;  // unweighted, for people
+  // The weighted sum's standard error over the weighted reference of the
+  // region's noisy pixels (per-sample variance above the weights' floor): a
+  // noise-free pixel (a sky, a light seen directly) catches any change of its
+  // own exactly, which says nothing of the test's power elsewhere.
+  double relative_error = 0;
+  double t = 0, dof = 0, p = 1;
   std::string describe(int width, int height) const;
 };
 
@@ -77,6 +85,10 @@ struct Result {
   double seconds = 0;
   const Region& worst() const;  // smallest p
   bool passed() const;
+  // The smallest relative change of the noisy pixels of the whole image (one
+  // channel) that fails with probability 0.99 at this render's noise: the
+  // test's power.
+  double detectable_change() const;
   std::string describe() const;
 };
 
