@@ -11,25 +11,31 @@
 //
 // What noise the render has. The test makes K independent renders (seeds
 // test::seed(base + r)) of n samples per pixel each and takes their mean; each
-// pixel's variance is estimated from its own K values, not taken from the
-// stored sd image. So the null hypothesis is only "the render's expected
-// value is the reference's", whatever the student's estimator's variance: a
+// pixel's variance is estimated from its own K values; a region's is never
+// taken below the solution's (the stored sd, image_test.cpp), which guards
+// the self-normalised test's lower tail. So the null hypothesis is only "the
+// render's expected value is the reference's", whatever the student's
+// estimator's variance (when it is at least the solution's): a
 // correct estimator other than the solution's (uniform hemisphere sampling
 // (-H), an adaptive pixel loop) is tested with its own noise, and a bug that
 // only adds noise is not what this test is for. n >= 2: a pixel of one
 // sample is sampled at its centre (P1T2), a different expected value.
 //
 // The test. Regions at three scales, per channel: the whole image, a 2 x 2
-// and a 4 x 4 grid (21 regions, 63 tests), each a Welch t test of
+// and a 4 x 4 grid (21 regions, 126 tests), each a Welch t test of
 //   t = sum_G w_p (T - R) / sqrt(sum_G w_p^2 (s_p^2 / K + ref_var_p)),
 // with Welch-Satterthwaite degrees of freedom (the per-pixel variances are
 // estimated from K values each, pooled over the region's pixels). The
-// weights w_p are the inverse of the solution's per-sample variance at this
-// size, from the stored images alone (image_test.cpp). No test of
+// weights w_p are 1 (the plain sum) or, in a second test of each region, the
+// inverse of the solution's per-sample variance at this size, from the stored
+// images alone (image_test.cpp): the weighted sum is not drowned by a few
+// noisy pixels (a light's edge, fireflies), the plain one sees what changes
+// those (an edge aliased, a light too bright), each catching gallery bugs the
+// other misses. No test of
 // single pixels: at a few samples per pixel a pixel's mean is far from normal
 // (a firefly is one sample), and a per-pixel z at a Sidak-corrected 5 sigma
 // would fail correct renders far more often than it claims; a region sums
-// tens to thousands of independent pixels. The 63 tests share
+// tens to thousands of independent pixels. The 126 tests share
 // alpha = 1e-5 (Sidak), ten times below the 1e-4 false-failure budget of a
 // graded test, for the normal approximation's far tail (the statistics
 // toolkit's convention). Differences up to sum_G (1e-6 |R| + 1e-12) count as
@@ -64,6 +70,7 @@ struct Region {
   int grid = 1, col = 0, row = 0;  // cell (col, row) of a grid x grid division, row 0 at the top
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   int channel = 0;
+  bool weighted = false;  // the weighted sum, or the plain one
   double mean_difference = 0, mean_reference = 0;  // unweighted, for people
   // The weighted sum's standard error over the weighted reference of the
   // region's noisy pixels (per-sample variance above the weights' floor): a
