@@ -1,7 +1,8 @@
 #pragma once
 // What an image test leaves behind when it fails, for a person to look at:
 // the render, the (block-averaged) reference, their difference and a p-value
-// map, as PNGs (linear EXRs of the render and reference too), in
+// map, as PNGs enlarged to the stored image's size (linear EXRs of the render
+// and reference at the test's size too), in
 // $PT_IMAGE_TEST_DIR or else ./image_test_failures/, one folder per test.
 // Where the folder cannot be written (the grader's sandbox lets a verifier
 // write nothing), the message says so; the verdict does not depend on it.
@@ -15,9 +16,9 @@ namespace pt::image_test {
 // folder and what each file shows (or why nothing was written).
 std::string write_failure_images(const Result& r);
 
-// Each pixel: the smallest p of the regions that hold it (any scale or
-// channel), as grey from black (p = 1) to white (p = alpha_each) on a log
-// scale, and red where p < alpha_each.
+// Each cell of the finest grid: its smallest p (any channel, either sum), as
+// grey from black (p = 1) to white (p = alpha_each) on a log scale, and red
+// where p < alpha_each (the coarser regions' p are in the message).
 Image p_value_image(const Result& r);
 
 }  // namespace pt::image_test
