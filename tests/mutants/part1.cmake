@@ -1,7 +1,8 @@
 # Part 1 mutants: plausible student bugs in ray generation (P1T1), pixel
 # sampling (P1T2), triangle (P1T3) and sphere (P1T4) intersection. Each one
 # must make at least one graded test in tests/part1/ fail; "Caught by" lists
-# every graded test that fails with the mutant (measured, not assumed).
+# every graded test that fails with the mutant (measured, not assumed), the
+# image tests (ImageP1.*) aside: scenes/README.md counts which mutants they catch.
 set(p1 reference/part1_raygen_intersect.cpp)
 
 # ---- P1T1 Camera::generate_ray ----
