@@ -1,14 +1,14 @@
 #pragma once
 // Part 2 across the boundary (README.md beside this file). A BVH's primitives
 // cross once, when its constructor calls construct_bvh: each one's box and
-// geometry. The worker builds over its copies with the student's code and
-// sends back the order the build left them in and the tree in preorder; the
-// verifier rebuilds the tree and keeps it. A traversal then names the tree
-// and a node of it, and its answer brings the log of every primitive test the
-// student's traversal made (which primitive, the ray it was given, hit or
-// not), which the verifier makes again, in order, on its own primitives: the
-// tests count work where they run, and an answer that does not match what the
-// verifier's own primitive says is a lie that breaks the link.
+// whether it has a BSDF, never its geometry. The worker builds over handles
+// that hold only that, with the student's code, and sends back the order the
+// build left them in and the tree in preorder; the verifier rebuilds the tree
+// and keeps it. A traversal then names the tree and a node of it. Every
+// primitive test the student's code makes on a handle is a call back to the
+// verifier (Call::TestPrimitive), which makes it on its own primitive: the
+// tests count work where they run, and the worker has no geometry to test
+// any other way. A hit record's primitive crosses as its index (a handle).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -28,8 +28,6 @@ namespace pt::boundary::bvh {
 // them, or one of these.
 constexpr int64_t kNoPrimitive = -1;  // a null pointer
 constexpr int64_t kElsewhere = -2;    // not one of the primitives sent
-
-enum class Shape : uint8_t { Triangle = 1, Sphere = 2 };
 
 // Neither end hears when a BVHAccel is freed (its destructor is the
 // framework's): both keep the trees built last. A test holds a few at a time.
@@ -150,52 +148,31 @@ inline std::unique_ptr<BVHNode> get_tree(Reader& in, std::vector<const BVHNode*>
   return root;
 }
 
-// One primitive test of a traversal, as the worker's copy of the primitive saw it.
-struct PrimitiveTest {
-  uint32_t index;  // in the order sent
-  bool closest;    // intersect() rather than has_intersection()
-  bool hit;
-  Ray ray;  // as it was passed in
+// What the worker learns of a primitive test: hit or not and the ray's range
+// after it, and for a hit of intersect() its distance t. Never the normal or
+// the barycentric coordinates, from which three hits would give a triangle
+// back: the verifier keeps the hit records its primitives write and fills the
+// traversal's answer from them.
+struct TestAnswer {
+  uint8_t hit = 0;
+  double min_t = 0.0, max_t = 0.0;
+  double t = 0.0;  // a hit of intersect(): its distance
 };
 
-// A log on the wire: a ray is written only where it differs from the test
-// before (most tests of a query see the same ray, or the same with max_t
-// shrunk at a hit), so that a traversal that tests thousands of primitives
-// per ray costs a few bytes a test.
-constexpr uint8_t kClosest = 1, kHit = 2, kNewRay = 4;
-
-inline bool same_ray(const Ray& a, const Ray& b) {
-  return a.o == b.o && a.d == b.d && a.min_t == b.min_t && a.max_t == b.max_t && a.depth == b.depth;
-}
-
-inline void put_tests(Writer& out, const std::vector<PrimitiveTest>& tests) {
-  out.put(static_cast<uint64_t>(tests.size()));
-  const Ray* last = nullptr;
-  for (const PrimitiveTest& t : tests) {
-    const bool new_ray = !last || !same_ray(*last, t.ray);
-    out.put(static_cast<uint8_t>((t.closest ? kClosest : 0) | (t.hit ? kHit : 0) | (new_ray ? kNewRay : 0)));
-    out.put(t.index);
-    if (new_ray) out.put(t.ray);
-    last = &t.ray;
-  }
-}
-
-// Calls `each(const PrimitiveTest&)` for every test in the log, in order.
-template <class Each>
-void get_tests(Reader& in, Each&& each) {
-  const auto count = in.get<uint64_t>();
-  if (count > kMaxPayload / 5) throw LinkBroken("a log of more tests than its message holds");
-  PrimitiveTest t{};
-  for (uint64_t i = 0; i < count; ++i) {
-    const auto flags = in.get<uint8_t>();
-    if (flags & ~(kClosest | kHit | kNewRay)) throw LinkBroken("a primitive test of no kind");
-    if (i == 0 && !(flags & kNewRay)) throw LinkBroken("a log whose first test names no ray");
-    t.closest = flags & kClosest;
-    t.hit = flags & kHit;
-    in.get(t.index);
-    if (flags & kNewRay) in.get(t.ray);
-    each(t);
-  }
-}
+// Besides the test asked for, in a query whose work nothing reads, the
+// verifier answers the tests of the primitives that follow it in the build's
+// order, each on the ray the one before left: the tests a traversal makes of
+// the rest of a leaf, and often of the leaves after it. The worker answers a
+// test from these when it asks exactly one of them, and calls back
+// otherwise. What the tests count is never read in such a query, so that the
+// tests answered ahead and never asked cost nothing but the verifier's time;
+// in a query whose work is read, each test is a call back of its own.
+struct Prefetched {
+  uint32_t index;
+  uint8_t closest;
+  Ray ray;  // as the test would be given it
+  TestAnswer answer;
+};
+constexpr uint32_t kMaxPrefetched = 32;
 
 }  // namespace pt::boundary::bvh

@@ -40,14 +40,19 @@ struct GuardedEstimate {
 };
 
 // GuardedDiffuse: the diffuse BSDF (the solution's, in Part 4's worker) that
-// counts its samples.
-class GuardedDiffuseCopy : public DiffuseBSDF {
+// counts its samples, holding it rather than being one, as the tests' does.
+class GuardedDiffuseCopy : public BSDF {
  public:
-  using DiffuseBSDF::DiffuseBSDF;
+  explicit GuardedDiffuseCopy(const Spectrum& albedo, const Spectrum& emission) : lambertian_(albedo, emission) {}
+  Spectrum f(const Vec3& wo, const Vec3& wi) const override { return lambertian_.f(wo, wi); }
   Spectrum sample_f(const Vec3& wo, Vec3* wi, double* pdf, Rng& rng) const override {
     path_guard_copy().count();
-    return DiffuseBSDF::sample_f(wo, wi, pdf, rng);
+    return lambertian_.sample_f(wo, wi, pdf, rng);
   }
+  Spectrum get_emission(const Vec3& wo) const override { return lambertian_.get_emission(wo); }
+
+ private:
+  DiffuseBSDF lambertian_;
 };
 
 // NormalMirror: all light along the surface normal, f cos / pdf = 1.

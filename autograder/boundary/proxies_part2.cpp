@@ -1,8 +1,11 @@
 // The verifier's Part 2: each task function asks the worker (README.md and
-// bvh_codec.h beside this file). construct_bvh sends the primitives and
-// rebuilds the tree the worker's build made; the traversals name that tree
-// and replay, on the verifier's own primitives, every primitive test the
-// worker's traversal made, so that the tests' counting primitives log them here.
+// bvh_codec.h beside this file). construct_bvh sends the primitives' boxes and
+// rebuilds the tree the worker's build made; the traversals name that tree.
+// Every primitive test the worker's code makes is a call back to here, made on
+// the verifier's own primitive, so that the tests' counting primitives count
+// it where the tests run.
+#include <algorithm>
+#include <cstdio>
 #include <mutex>
 #include <string>
 #include <typeinfo>
@@ -45,7 +48,20 @@ struct BuiltTree {
   const BVHNode* root = nullptr;
   std::unordered_map<const BVHNode*, int64_t> node_ids;  // position in preorder
   std::vector<Primitive*> sent;                           // the primitives, in the order sent
+  std::unordered_map<const Primitive*, int64_t> handle_of;  // a primitive sent, or the one it wraps -> its index
+  std::vector<int64_t> order;        // the index at each position of the build's order
+  std::vector<uint32_t> position_of;  // each index sent -> its position there
 };
+
+// Where the build left each primitive sent (a null or a primitive of the
+// worker's own stands nowhere).
+void find_positions(BuiltTree& tree, std::vector<int64_t> order) {
+  tree.position_of.assign(tree.sent.size(), UINT32_MAX);
+  for (size_t k = 0; k < order.size(); ++k)
+    if (order[k] >= 0 && static_cast<uint64_t>(order[k]) < tree.sent.size())
+      tree.position_of[static_cast<size_t>(order[k])] = static_cast<uint32_t>(k);
+  tree.order = std::move(order);
+}
 
 // By accelerator. A BVHAccel's destructor is the framework's and says nothing
 // here, so an entry can outlive its accelerator: a new one at the same address
@@ -83,17 +99,14 @@ const BuiltTree& built_tree(const BVHAccel* accel, const BVHNode* root) {
                          "tests' counting wrappers (autograder/boundary/README.md)");
 }
 
-// The geometry of `p`, through the wrappers that count its tests.
-void put_shape(Writer& in, const Primitive& p) {
-  if (const auto* t = dynamic_cast<const Triangle*>(&p)) {
-    in.put(bvh::Shape::Triangle).put(t->p1()).put(t->p2()).put(t->p3()).put(t->n1()).put(t->n2()).put(t->n3());
-  } else if (const auto* s = dynamic_cast<const Sphere*>(&p)) {
-    in.put(bvh::Shape::Sphere).put(s->o).put(s->r).put(s->r2);
-  } else if (const auto* c = dynamic_cast<const test::p2::CountingPrimitive*>(&p)) {
-    put_shape(in, *c->inner());
-  } else {
-    cannot_cross(p);
-  }
+// Refuses, before anything is sent, a primitive that would behave otherwise
+// here than in one process; maps it, and the shape a counting wrapper holds
+// (which its intersect writes into a hit), to its index.
+void index_primitive(BuiltTree& tree, const Primitive* p, int64_t index) {
+  tree.handle_of[p] = index;
+  if (dynamic_cast<const Triangle*>(p) || dynamic_cast<const Sphere*>(p)) return;
+  if (const auto* c = dynamic_cast<const test::p2::CountingPrimitive*>(p)) return index_primitive(tree, c->inner(), index);
+  cannot_cross(*p);
 }
 
 Primitive* primitive_at(int64_t index, const std::vector<Primitive*>& sent) {
@@ -102,18 +115,111 @@ Primitive* primitive_at(int64_t index, const std::vector<Primitive*>& sent) {
   throw boundary::LinkBroken("a primitive index out of range");
 }
 
-// Makes each primitive test of the worker's traversal again on the verifier's
-// own primitive: a counting one logs it here. An answer that differs from the
-// verifier's is a lie about the worker's own work.
-void replay(Reader& out, const BuiltTree& tree) {
-  bvh::get_tests(out, [&](const bvh::PrimitiveTest& t) {
-    if (t.index >= tree.sent.size()) throw boundary::LinkBroken("a primitive test of a primitive never sent");
-    const Primitive& p = *tree.sent[t.index];
-    Ray r = t.ray;
-    Intersection scratch;
-    const bool hit = t.closest ? p.intersect(r, &scratch) : p.has_intersection(r);
-    if (hit != t.hit) throw boundary::LinkBroken("a primitive test whose answer is not the primitive's");
-  });
+// What a handle of the worker's names here: a hit on something the worker
+// made crosses as "something else", which no test's primitive equals.
+const Primitive* named_by(const BuiltTree& tree, int64_t handle) {
+  if (handle == bvh::kNoPrimitive) return nullptr;
+  return handle == bvh::kElsewhere ? boundary::elsewhere_primitive() : primitive_at(handle, tree.sent);
+}
+
+int64_t handle_in(const BuiltTree& tree, const Primitive* p) {
+  if (!p) return bvh::kNoPrimitive;
+  const auto found = tree.handle_of.find(p);
+  return found == tree.handle_of.end() ? bvh::kElsewhere : found->second;
+}
+
+// The build or traversal being answered: its tree, the only one whose
+// primitives the worker may test (those of any other may be freed by now),
+// and the hit records the verifier's primitives wrote, by index.
+struct Query {
+  const BuiltTree* tree;
+  bool work_read;  // whether every test must be seen one at a time
+  std::unordered_map<uint32_t, Intersection> written;
+};
+Query* g_query = nullptr;
+
+class InUse {
+ public:
+  InUse(const BuiltTree& tree, bool work_read) : query_{&tree, work_read, {}}, previous_(g_query) { g_query = &query_; }
+  ~InUse() { g_query = previous_; }
+  InUse(const InUse&) = delete;
+  InUse& operator=(const InUse&) = delete;
+  const Query& query() const { return query_; }
+
+ private:
+  Query query_;
+  Query* previous_;
+};
+
+// One test on the verifier's own primitive: a counting one counts it here.
+bvh::TestAnswer test_here(Query& q, uint32_t index, bool closest, const Ray& r) {
+  const Primitive& p = *q.tree->sent[index];
+  Intersection hit;
+  bvh::TestAnswer a;
+  a.hit = closest ? p.intersect(r, &hit) : p.has_intersection(r);
+  a.min_t = r.min_t;
+  a.max_t = r.max_t;
+  if (a.hit && closest) {
+    a.t = hit.t;
+    q.written[index] = hit;
+  }
+  return a;
+}
+
+void put_answer(Writer& out, const bvh::TestAnswer& a, bool closest) {
+  out.put(a.hit).put(a.min_t).put(a.max_t);
+  if (a.hit && closest) out.put(a.t);
+}
+
+// A primitive test of the worker's code, made here. In a query whose work
+// nothing reads, the tests of the primitives that follow it in the build's
+// order come with it (bvh_codec.h).
+void test_primitive(Reader& in, Writer& out) {
+  const auto tree_id = in.get<uint64_t>();
+  const auto index = in.get<uint32_t>();
+  const bool closest = in.get<uint8_t>() != 0;
+  Ray r = in.get<Ray>();
+  if (!g_query || g_query->tree->id != tree_id)
+    throw std::logic_error("a primitive of a BVH other than the one being built or traversed was tested; only that "
+                           "one's primitives can be tested across the process boundary (autograder/boundary/README.md)");
+  Query& q = *g_query;
+  if (index >= q.tree->sent.size()) throw boundary::LinkBroken("a primitive test of a primitive never sent");
+  bvh::TestAnswer a = test_here(q, index, closest, r);
+  put_answer(out, a, closest);
+  Writer prefetched;
+  uint32_t count = 0;
+  const BuiltTree& tree = *q.tree;
+  const size_t from = !q.work_read && index < tree.position_of.size() ? size_t(tree.position_of[index]) + 1 : SIZE_MAX;
+  for (size_t k = from; k < tree.order.size() && count < bvh::kMaxPrefetched; ++k) {
+    if (a.hit && !closest) break;  // an any-hit query ends at its first hit
+    if (tree.order[k] < 0 || static_cast<uint64_t>(tree.order[k]) >= tree.sent.size()) continue;
+    const auto j = static_cast<uint32_t>(tree.order[k]);
+    const Ray given = r;
+    a = test_here(q, j, closest, r);
+    prefetched.put(j).put(static_cast<uint8_t>(closest)).put(given);
+    put_answer(prefetched, a, closest);
+    ++count;
+  }
+  out.put(count).put_bytes(prefetched.bytes());
+}
+
+const bool kCallbackServed = (boundary::serve_callback(Call::TestPrimitive, test_primitive), true);
+
+// The hit record a traversal's answer names: the one the verifier's primitive
+// wrote at that distance, or, for what no test of this query wrote (a record
+// the worker's code made up), the distance and primitive alone.
+void fill_hit(Intersection& isect, const Query& q, int64_t handle, double t) {
+  if (handle >= 0) {
+    const auto written = q.written.find(static_cast<uint32_t>(handle));
+    if (written != q.written.end() && written->second.t == t) {
+      isect = written->second;
+      return;
+    }
+  }
+  isect = Intersection();
+  isect.t = t;
+  isect.primitive = named_by(*q.tree, handle);
+  isect.bsdf = handle >= 0 ? isect.primitive->get_bsdf() : handle == bvh::kElsewhere ? boundary::elsewhere_bsdf() : nullptr;
 }
 
 // A traversal of the tree built for `accel`, from `node`.
@@ -132,12 +238,10 @@ bool traverse(const BVHAccel* accel, const BVHNode* root, const BVHNode* node, c
   Writer in(160);
   in.put(tree.id).put(node_id);
   in.put(r);
-  const Primitive* before = isect ? isect->primitive : nullptr;
   in.put(static_cast<uint8_t>(isect != nullptr));
-  if (isect) {
-    in.put(isect->t).put(isect->n).put(isect->barycentric);
-    in.put(before ? bvh::kElsewhere : bvh::kNoPrimitive).put(static_cast<uint8_t>(isect->bsdf != nullptr));
-  }
+  const int64_t handle_before = isect ? handle_in(tree, isect->primitive) : bvh::kNoPrimitive;
+  if (isect) in.put(isect->t).put(handle_before);
+  const InUse in_use(tree, test::p2::query_work_is_read());
   const std::string answer = call_worker(closest ? Call::BvhIntersect : Call::BvhHasIntersection, in);
   return boundary::read_answer([&] {
     Reader out(answer);
@@ -145,21 +249,10 @@ bool traverse(const BVHAccel* accel, const BVHNode* root, const BVHNode* node, c
     r.min_t = out.get<double>();
     r.max_t = out.get<double>();
     if (isect) {
-      out.get(isect->t);
-      out.get(isect->n);
-      out.get(isect->barycentric);
-      const auto primitive = out.get<int64_t>();
-      const auto bsdf = out.get<boundary::Points>();
-      isect->primitive = primitive == bvh::kNoPrimitive ? nullptr
-                         : primitive == bvh::kElsewhere ? (before ? before : boundary::elsewhere_primitive())
-                                                        : primitive_at(primitive, tree.sent);
-      const BSDF* own = isect->primitive ? isect->primitive->get_bsdf() : nullptr;
-      isect->bsdf = bsdf == boundary::Points::Nothing ? nullptr
-                    : bsdf == boundary::Points::Asked ? own
-                                                      : boundary::elsewhere_bsdf();
+      const auto t = out.get<double>();
+      const auto handle = out.get<int64_t>();
+      if (handle != handle_before || t != isect->t) fill_hit(*isect, in_use.query(), handle, t);
     }
-    work_counters().node_visits += out.get<uint64_t>();
-    replay(out, tree);
     out.finish();
     return hit;
   });
@@ -190,21 +283,27 @@ std::unique_ptr<BVHNode> BVHAccel::construct_bvh(PrimIter start, PrimIter end, s
   BuiltTree tree;
   tree.id = ++next_id;
   tree.sent = primitives_;
-  Writer in(64 + tree.sent.size() * 200);
+  Writer in(64 + tree.sent.size() * 64);
   // The worker builds within the address space this process may still map, so
   // that a build that never stops fails there as it would here: with
   // std::bad_alloc under a test's limit, not by taking the machine's memory.
   in.put(tree.id).put(static_cast<uint64_t>(max_leaf_size)).put(bvh::address_space_room());
   in.put(static_cast<uint64_t>(tree.sent.size()));
-  for (const Primitive* p : tree.sent) {
+  for (size_t i = 0; i < tree.sent.size(); ++i) {
+    const Primitive* p = tree.sent[i];
+    index_primitive(tree, p, static_cast<int64_t>(i));
     in.put(p->get_bbox()).put(static_cast<uint8_t>(p->get_bsdf() != nullptr));
-    put_shape(in, *p);
   }
-  const std::string answer = call_worker(Call::BuildBvh, in);
+  std::string answer;
+  {
+    const InUse in_use(tree, true);  // a build may test primitives too
+    answer = call_worker(Call::BuildBvh, in);
+  }
   std::vector<const BVHNode*> preorder;
+  std::vector<int64_t> order;
   std::unique_ptr<BVHNode> root = boundary::read_answer([&] {
     Reader out(answer);
-    const auto order = out.get_vector<int64_t>(boundary::kMaxPayload / sizeof(int64_t));
+    order = out.get_vector<int64_t>(boundary::kMaxPayload / sizeof(int64_t));
     std::vector<Primitive*> arranged;
     arranged.reserve(order.size());
     for (int64_t index : order) arranged.push_back(primitive_at(index, tree.sent));
@@ -215,6 +314,7 @@ std::unique_ptr<BVHNode> BVHAccel::construct_bvh(PrimIter start, PrimIter end, s
   });
   tree.root = root.get();
   for (size_t i = 0; i < preorder.size(); ++i) tree.node_ids[preorder[i]] = static_cast<int64_t>(i);
+  find_positions(tree, std::move(order));
   keep(this, std::move(tree));
   return root;
 }

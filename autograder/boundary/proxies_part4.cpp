@@ -22,8 +22,8 @@ using boundary::Writer;
 
 bool encode_test_bsdf(Writer& w, const BSDF& b) {
   if (typeid(b) == typeid(test::part4::GuardedDiffuse)) {
-    const auto& d = static_cast<const DiffuseBSDF&>(b);
-    w.put(BsdfKind::GuardedDiffuse).put(d.reflectance).put(d.emission);
+    const auto& d = static_cast<const test::part4::GuardedDiffuse&>(b);
+    w.put(BsdfKind::GuardedDiffuse).put(d.albedo()).put(d.emission());
     return true;
   }
   if (typeid(b) == typeid(test::part4::NormalMirror)) {

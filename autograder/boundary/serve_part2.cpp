@@ -1,22 +1,18 @@
 // The worker's Part 2: the verifier's calls (proxies_part2.cpp) answered by
-// the student's BVH. The worker keeps each tree it built, over its own copies
-// of the primitives sent, and logs every primitive test a traversal makes on
-// them (bvh_codec.h).
-#include <sys/resource.h>
-
+// the student's BVH. The worker keeps each tree it built, over handles of the
+// primitives sent: a handle holds its box and whether it has a BSDF, never
+// the geometry, and each test of it is a call back to the verifier, which
+// makes it on its own primitive and counts it there (bvh_codec.h).
 #include <deque>
 #include <unordered_map>
 
+#include <cstring>
+
 #include "bvh_codec.h"
-#include "geometry/mesh.h"
-#include "geometry/sphere.h"
-#include "geometry/triangle.h"
 #include "hit_codec.h"
 
 namespace pt::boundary {
 namespace {
-
-using bvh::PrimitiveTest;
 
 // The BSDF of a primitive that has one on the verifier's side: a hit's BSDF
 // only needs to be told apart from "none" and "something else".
@@ -25,59 +21,36 @@ const BSDF* own_bsdf() {
   return &b;
 }
 
-// The primitive tests of the traversal being answered. Not a member of the
-// copies below: a student's code that reads a copy's bytes finds no pointer to
-// the log to rewrite it through.
-std::vector<PrimitiveTest>& test_log() {
-  static std::vector<PrimitiveTest> log;
-  return log;
-}
+Link* g_link = nullptr;
 
-// Built only for the test that proves the verifier replays each primitive
-// test (tests/CMakeLists.txt, boundary:part2-lying-worker): this worker says
-// the first test of every traversal answered the opposite of what it did.
-#ifdef PT_BOUNDARY_LYING_WORKER
-constexpr bool kLieAboutFirstTest = true;
-#else
-constexpr bool kLieAboutFirstTest = false;
-#endif
-
-// The worker's copy of a primitive sent: its box as the verifier's primitive
-// gave it, and every test of it logged. It wraps the geometry (tested by the
-// framework's, the solution's, Part 1) rather than being it, as the tests'
-// counting primitives do: a traversal that casts it to a Triangle to call
-// Triangle::intersect directly, unlogged, gets nothing to call.
-class LoggedCopy final : public Primitive {
+// What the student's build and traversal get for a primitive sent. Its
+// intersect writes itself into a hit, as any primitive does (the handle
+// crosses back as its index), with the hit's distance and nothing else of the
+// shape (bvh::TestAnswer): a traversal that fires rays at it to find the
+// shape behind it finds only the handle.
+class Handle final : public Primitive {
  public:
-  LoggedCopy(uint32_t index, const BBox& box, std::unique_ptr<Primitive> shape)
-      : index_(index), box_(box), shape_(std::move(shape)) {}
+  Handle(uint64_t tree, uint32_t index, const BBox& box, bool with_bsdf)
+      : tree_(tree), index_(index), box_(box), with_bsdf_(with_bsdf) {}
   BBox get_bbox() const override { return box_; }
-  const BSDF* get_bsdf() const override { return shape_->get_bsdf(); }
-  bool has_intersection(const Ray& r) const override {
-    const Ray given = r;
-    const bool hit = shape_->has_intersection(r);
-    test_log().push_back({index_, false, hit, given});
-    return hit;
-  }
-  bool intersect(const Ray& r, Intersection* isect) const override {
-    const Ray given = r;
-    const bool hit = shape_->intersect(r, isect);
-    test_log().push_back({index_, true, hit, given});
-    return hit;
-  }
-  const Primitive* shape() const { return shape_.get(); }
+  const BSDF* get_bsdf() const override { return with_bsdf_ ? own_bsdf() : nullptr; }
+  bool has_intersection(const Ray& r) const override { return test(r, nullptr, false); }
+  bool intersect(const Ray& r, Intersection* isect) const override { return test(r, isect, true); }
 
  private:
+  bool test(const Ray& r, Intersection* isect, bool closest) const;
+  bool apply(const bvh::TestAnswer& a, const Ray& r, Intersection* isect, bool closest) const;
+
+  uint64_t tree_;
   uint32_t index_;
   BBox box_;
-  std::unique_ptr<Primitive> shape_;
+  bool with_bsdf_;
 };
 
 struct WorkerTree {
   uint64_t id = 0;
-  Mesh meshes[2];  // triangles without a BSDF, and with one
-  std::vector<std::unique_ptr<LoggedCopy>> copies;
-  std::unordered_map<const Primitive*, int64_t> index_of;  // copy or shape -> its index
+  std::vector<std::unique_ptr<Handle>> handles;
+  std::unordered_map<const Primitive*, int64_t> index_of;  // handle -> its index
   std::unique_ptr<BVHAccel> accel;
   std::vector<const BVHNode*> preorder;
 };
@@ -96,55 +69,13 @@ WorkerTree& tree_named(uint64_t id) {
                            std::to_string(kTreesKept) + " built)");
 }
 
-// Reads the primitives sent into `t`'s copies, in order.
+// Reads the primitives sent into `t`'s handles, in order.
 void read_primitives(Reader& in, WorkerTree& t, uint64_t count) {
-  struct Sent {
-    BBox box;
-    bool with_bsdf;
-    bvh::Shape shape;
-    uint32_t first;  // triangle: its first vertex in its mesh
-    Vec3 o;
-    double r, r2;
-  };
-  std::vector<Sent> sent;
-  sent.reserve(static_cast<size_t>(count));
   for (uint64_t i = 0; i < count; ++i) {
-    Sent s{};
-    in.get(s.box);
-    s.with_bsdf = in.get<uint8_t>() != 0;
-    s.shape = in.get<bvh::Shape>();
-    if (s.shape == bvh::Shape::Triangle) {
-      Mesh& mesh = t.meshes[s.with_bsdf];
-      s.first = static_cast<uint32_t>(mesh.positions.size());
-      for (int k = 0; k < 3; ++k) mesh.positions.push_back(in.get<Vec3>());
-      for (int k = 0; k < 3; ++k) mesh.normals.push_back(in.get<Vec3>());
-      mesh.faces.push_back({s.first, s.first + 1, s.first + 2});
-    } else if (s.shape == bvh::Shape::Sphere) {
-      in.get(s.o);
-      in.get(s.r);
-      in.get(s.r2);
-    } else {
-      throw std::runtime_error("a primitive of unknown shape");
-    }
-    sent.push_back(s);
-  }
-  // The meshes are complete: a triangle refers to its mesh's vertices.
-  t.meshes[1].bsdf = own_bsdf();
-  for (uint32_t i = 0; i < sent.size(); ++i) {
-    const Sent& s = sent[i];
-    std::unique_ptr<Primitive> shape;
-    if (s.shape == bvh::Shape::Triangle) {
-      shape = std::make_unique<Triangle>(&t.meshes[s.with_bsdf], s.first, s.first + 1, s.first + 2);
-    } else {
-      auto sphere = std::make_unique<Sphere>(s.o, s.r, s.with_bsdf ? own_bsdf() : nullptr);
-      sphere->r2 = s.r2;
-      shape = std::move(sphere);
-    }
-    t.copies.push_back(std::make_unique<LoggedCopy>(i, s.box, std::move(shape)));
-    // A hit names the shape (its intersect writes itself); a student's code
-    // may name the copy.
-    t.index_of[t.copies.back().get()] = i;
-    t.index_of[t.copies.back()->shape()] = i;
+    const auto box = in.get<BBox>();
+    const bool with_bsdf = in.get<uint8_t>() != 0;
+    t.handles.push_back(std::make_unique<Handle>(t.id, static_cast<uint32_t>(i), box, with_bsdf));
+    t.index_of[t.handles.back().get()] = static_cast<int64_t>(i);
   }
 }
 
@@ -154,17 +85,52 @@ int64_t index_in(const WorkerTree& t, const Primitive* p) {
   return found == t.index_of.end() ? bvh::kElsewhere : found->second;
 }
 
+const Primitive* handle_at(const WorkerTree& t, int64_t h) {
+  if (h >= 0 && static_cast<uint64_t>(h) < t.handles.size()) return t.handles[static_cast<size_t>(h)].get();
+  if (h == bvh::kElsewhere) return elsewhere_primitive();
+  if (h == bvh::kNoPrimitive) return nullptr;
+  throw std::runtime_error("a hit on a primitive the tree does not have");
+}
+
+// The answers the verifier gave ahead, for the tests of a leaf (bvh_codec.h).
+std::vector<bvh::Prefetched>& prefetched() {
+  static std::vector<bvh::Prefetched> p;
+  return p;
+}
+
+// The tree being built, not yet kept: a build may test its primitives too.
+WorkerTree*& building() {
+  static WorkerTree* t = nullptr;
+  return t;
+}
+
+struct Building {
+  explicit Building(WorkerTree& t) { building() = &t; }
+  ~Building() { building() = nullptr; }
+  Building(const Building&) = delete;
+  Building& operator=(const Building&) = delete;
+};
+
+const WorkerTree* tree_of(uint64_t id) {
+  if (building() && building()->id == id) return building();
+  for (auto& t : trees())
+    if (t->id == id) return t.get();
+  return nullptr;
+}
+
 void build(Reader& in, Writer& out) {
   auto t = std::make_unique<WorkerTree>();
   t->id = in.get<uint64_t>();
   const auto max_leaf_size = static_cast<size_t>(in.get<uint64_t>());
   const auto room = in.get<int64_t>();
   const auto count = in.get<uint64_t>();
-  if (count > kMaxPayload / 64) throw std::runtime_error("more primitives than the message holds");
+  if (count > kMaxPayload / sizeof(BBox)) throw std::runtime_error("more primitives than the message holds");
   read_primitives(in, *t, count);
   std::vector<Primitive*> input;
-  for (auto& p : t->copies) input.push_back(p.get());
+  for (auto& p : t->handles) input.push_back(p.get());
+  prefetched().clear();
   {
+    const Building now(*t);
     const bvh::AddressSpaceRoom limit(room);
     t->accel = std::make_unique<BVHAccel>(std::move(input), max_leaf_size);  // the student's construct_bvh
   }
@@ -188,29 +154,70 @@ void traverse(Reader& in, Writer& out, bool closest) {
   Intersection hit;
   if (with_hit) {
     in.get(hit.t);
-    in.get(hit.n);
-    in.get(hit.barycentric);
-    hit.primitive = in.get<int64_t>() == bvh::kNoPrimitive ? nullptr : elsewhere_primitive();
-    hit.bsdf = in.get<uint8_t>() ? elsewhere_bsdf() : nullptr;
+    hit.primitive = handle_at(t, in.get<int64_t>());
+    hit.bsdf = hit.primitive ? hit.primitive->get_bsdf() : nullptr;
   }
-  test_log().clear();
-  const uint64_t visits_before = work_counters().node_visits;
+  prefetched().clear();
   const bool result = closest ? t.accel->intersect(ray, &hit, node) : t.accel->has_intersection(ray, node);
   out.put(static_cast<uint8_t>(result)).put(ray.min_t).put(ray.max_t);
-  if (with_hit) {
-    out.put(hit.t).put(hit.n).put(hit.barycentric).put(index_in(t, hit.primitive));
-    const BSDF* own = hit.primitive ? hit.primitive->get_bsdf() : nullptr;
-    out.put(!hit.bsdf ? Points::Nothing : hit.bsdf == own ? Points::Asked : Points::Elsewhere);
+  if (with_hit) out.put(hit.t).put(index_in(t, hit.primitive));
+}
+
+// Bit for bit (a -0.0 is not a 0.0 to a slab or a triangle test); Ray has padding.
+bool same_ray(const Ray& a, const Ray& b) {
+  const auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  return same(a.o, b.o) && same(a.d, b.d) && same(a.min_t, b.min_t) && same(a.max_t, b.max_t) && a.depth == b.depth;
+}
+
+bool Handle::apply(const bvh::TestAnswer& a, const Ray& r, Intersection* isect, bool closest) const {
+  r.min_t = a.min_t;
+  r.max_t = a.max_t;
+  if (a.hit && closest && isect) {
+    *isect = Intersection();
+    isect->t = a.t;
+    isect->primitive = this;
+    isect->bsdf = get_bsdf();
   }
-  out.put(work_counters().node_visits - visits_before);
-  if (kLieAboutFirstTest && !test_log().empty()) test_log().front().hit = !test_log().front().hit;
-  bvh::put_tests(out, test_log());
-  test_log().clear();
+  return a.hit != 0;
+}
+
+bvh::TestAnswer get_answer(Reader& in, bool closest) {
+  bvh::TestAnswer a;
+  in.get(a.hit);
+  in.get(a.min_t);
+  in.get(a.max_t);
+  if (a.hit && closest) in.get(a.t);
+  return a;
+}
+
+bool Handle::test(const Ray& r, Intersection* isect, bool closest) const {
+  for (const bvh::Prefetched& p : prefetched())
+    if (p.index == index_ && (p.closest != 0) == closest && same_ray(p.ray, r)) return apply(p.answer, r, isect, closest);
+  if (!tree_of(tree_)) throw std::runtime_error("a primitive of a BVH the worker no longer keeps was tested");
+  Writer args(96);
+  args.put(tree_).put(index_).put(static_cast<uint8_t>(closest)).put(r);
+  const std::string answer = g_link->call(Call::TestPrimitive, args);
+  Reader out(answer);
+  const bvh::TestAnswer a = get_answer(out, closest);
+  const auto count = out.get<uint32_t>();
+  if (count > bvh::kMaxPrefetched) throw LinkBroken("more answers than a leaf holds");
+  prefetched().clear();
+  for (uint32_t k = 0; k < count; ++k) {
+    bvh::Prefetched p;
+    out.get(p.index);
+    p.closest = out.get<uint8_t>();
+    out.get(p.ray);
+    p.answer = get_answer(out, p.closest != 0);
+    prefetched().push_back(p);
+  }
+  out.finish();
+  return apply(a, r, isect, closest);
 }
 
 }  // namespace
 
 void serve_task_calls(Link& link) {
+  g_link = &link;
   link.on(Call::BoxIntersect, [](Reader& in, Writer& out) {
     const auto box = in.get<BBox>();
     const auto ray = in.get<Ray>();

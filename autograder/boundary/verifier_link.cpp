@@ -152,7 +152,13 @@ void start_worker(const std::string& path, int& in, int& out) {
   out = requests[1];
 }
 
+std::vector<std::pair<Call, Handler>>& part_callbacks() {
+  static std::vector<std::pair<Call, Handler>> callbacks;
+  return callbacks;
+}
+
 void serve_callbacks(Link& link) {
+  for (const auto& [call, handler] : part_callbacks()) link.on(call, handler);
   link.on(Call::EstRadiance, [](Reader& args, Writer& result) {
     if (!g_tracer) throw std::runtime_error("est_radiance_global_illumination called outside a pixel's sampling");
     const auto ray = args.get<Ray>();
@@ -221,6 +227,8 @@ std::string call_worker(Call call, const Writer& args) {
     worker_lost(e.what(), kWorkerBrokeLink);
   }
 }
+
+void serve_callback(Call call, Handler handler) { part_callbacks().emplace_back(call, std::move(handler)); }
 
 void answer_broke_link(const std::string& why) { worker_lost(why, kWorkerBrokeLink); }
 

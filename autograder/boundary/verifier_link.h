@@ -32,6 +32,11 @@ constexpr int kWorkerBrokeLink = 89;
 // this process with kWorkerLost after saying why on stderr.
 std::string call_worker(Call call, const Writer& args);
 
+// A callback of one part (Part 2's primitive tests), served from the first
+// call on. Call before the first call (a static initializer of the part's
+// proxies).
+void serve_callback(Call call, Handler handler);
+
 // Keeps other threads off the link for a sequence of calls that belong
 // together (a scene's definition and the calls that name it).
 std::unique_lock<std::recursive_mutex> hold_link();

@@ -66,6 +66,7 @@ enum class Call : uint16_t {
   // Callbacks into the verifier
   EstRadiance = 100,  // PathTracer::est_radiance_global_illumination of the verifier's tracer
   NextSample,         // the next_sample passed to sample_adaptively
+  TestPrimitive,      // Part 2: a primitive test of a handle, made on the verifier's primitive
 };
 
 constexpr uint32_t kMaxPayload = 64u << 20;

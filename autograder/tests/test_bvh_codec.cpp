@@ -2,8 +2,7 @@
 // whole in preorder and is rebuilt without recursion, however deep; a tree no
 // honest worker sends (nodes past its end, a node missing, children of no
 // kind, deeper or larger than the wire carries) breaks the link; a tree the
-// worker could only have made by a cycle is refused before it is sent; a log
-// of primitive tests reads back as written, a ray only where it changed; a
+// worker could only have made by a cycle is refused before it is sent; a
 // build gets the address-space room the verifier had.
 #include <gtest/gtest.h>
 
@@ -153,44 +152,6 @@ TEST(BvhCodec, ACycleIsRefusedBeforeItIsSent) {
     EXPECT_NE(std::string(e.what()).find("levels deep"), std::string::npos) << e.what();
   }
   (void)root->l.release();
-}
-
-TEST(BvhCodec, ALogReadsBackAsWrittenWithRaysOnlyWhereTheyChange) {
-  Ray a(Vec3(0, 0, 5), Vec3(0, 0, -1));
-  Ray shrunk = a;
-  shrunk.max_t = 4.5;
-  Ray b(Vec3(1, 2, 3), Vec3(0, -1, 0), 7.0, 2);
-  b.min_t = 0.25;
-  const std::vector<PrimitiveTest> log = {
-      {3, true, false, a}, {4, true, true, a}, {9, true, false, shrunk}, {9, false, true, shrunk}, {0, false, false, b}};
-  Writer w;
-  put_tests(w, log);
-  // Three rays written (a, shrunk, b), two entries reuse the one before.
-  EXPECT_EQ(w.bytes().size(), sizeof(uint64_t) + log.size() * 5 + 3 * sizeof(Ray));
-  Reader r(w.bytes());
-  std::vector<PrimitiveTest> got;
-  get_tests(r, [&](const PrimitiveTest& t) { got.push_back(t); });
-  r.finish();
-  ASSERT_EQ(got.size(), log.size());
-  for (size_t i = 0; i < log.size(); ++i) {
-    EXPECT_EQ(got[i].index, log[i].index) << "test " << i;
-    EXPECT_EQ(got[i].closest, log[i].closest) << "test " << i;
-    EXPECT_EQ(got[i].hit, log[i].hit) << "test " << i;
-    EXPECT_TRUE(same_ray(got[i].ray, log[i].ray)) << "test " << i << ": " << got[i].ray << " for " << log[i].ray;
-  }
-}
-
-TEST(BvhCodec, AMalformedLogBreaksTheLink) {
-  Writer no_ray;
-  no_ray.put(uint64_t(1)).put(uint8_t(kHit)).put(uint32_t(0));
-  Writer no_kind;
-  no_kind.put(uint64_t(1)).put(uint8_t(kNewRay | 16)).put(uint32_t(0));
-  Writer too_long;
-  too_long.put(uint64_t(kMaxPayload));
-  for (const Writer* w : {&no_ray, &no_kind, &too_long}) {
-    Reader r(w->bytes());
-    EXPECT_THROW(get_tests(r, [](const PrimitiveTest&) {}), LinkBroken);
-  }
 }
 
 // The worker builds within the verifier's room: 64 MiB more than it maps

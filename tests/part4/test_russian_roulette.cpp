@@ -39,6 +39,29 @@ GRADED_TEST(RussianRoulette, KeepsTheMean, "P4T2", 2, Visible) {
     EXPECT_TRUE(stats::mean_matches(st, furnace_bounces(c.a, 1, c.m), alpha, what.str()))
         << "Russian roulette must leave the mean unchanged: survivors are divided by p";
   }
+
+  // ... and roulette ends paths, as the answers show: with accumulate_bounces
+  // off, bounce 6 alone (a = 0.8, p = 0.5) reaches the eye only along a path
+  // that survived roulette at vertices 2 to 5, with probability p^4 = 1/16;
+  // every other estimate is exactly 0. Without roulette every path reaches
+  // vertex 6 and is 0 only if it escaped through the strips along the box's
+  // edges (below 2e-4 of them, RussianRoulette.FirstBounceIsAlwaysTaken).
+  // The check asks for at least a quarter of 20000 estimates to be 0: a
+  // correct solution (3/4 of them 0 even if its roulette starts two bounces
+  // late) falls short with probability below 1e-100 (Chernoff), one without
+  // roulette (about 4 zeros) never reaches it. Counted from the estimates
+  // themselves, so that it holds whatever the path guard saw.
+  Scene scene = make_white_furnace(0.8, kLe);
+  const Aim target = furnace_aim(scene);
+  PathTracer tracer(scene, furnace_settings(6, 0.5, /*accumulate=*/false));
+  Rng rng(test::seed(seed++));
+  const int n = 20000;
+  int zeros = 0;
+  for (int i = 0; i < n; ++i) zeros += illuminance(estimate_once(tracer, target, Entry::AtLeastOneBounce, rng)) == 0.0;
+  EXPECT_GE(zeros, n / 4) << "estimates of bounce 6 alone that were exactly 0, out of " << n
+                          << ", in the furnace (a = 0.8) with rr_continue_prob = 0.5: a path survives roulette at "
+                             "vertices 2 to 5 with probability 1/16, so most of them must be 0; with none, Russian "
+                             "roulette is not ending paths";
 }
 
 }  // namespace

@@ -333,8 +333,27 @@ CountedBVH::CountedBVH(const std::vector<const Primitive*>& prims, size_t max_le
 
 CountedBVH::~CountedBVH() = default;
 
+namespace {
+thread_local bool g_work_read = false;
+
+// For the life of the object, whether the query's work is read.
+class WorkRead {
+ public:
+  explicit WorkRead(bool read) : previous_(g_work_read) { g_work_read = read; }
+  ~WorkRead() { g_work_read = previous_; }
+  WorkRead(const WorkRead&) = delete;
+  WorkRead& operator=(const WorkRead&) = delete;
+
+ private:
+  bool previous_;
+};
+}  // namespace
+
+bool query_work_is_read() { return g_work_read; }
+
 bool CountedBVH::closest(const Ray& r, Intersection* isect, QueryWork* work,
                          std::vector<int>* leaves_in_order) const {
+  const WorkRead read(work || leaves_in_order);
   meter_.start();
   bool hit = bvh_->intersect(r, isect);
   isect->primitive = meter_.unwrap(isect->primitive);
@@ -344,6 +363,7 @@ bool CountedBVH::closest(const Ray& r, Intersection* isect, QueryWork* work,
 }
 
 bool CountedBVH::any(const Ray& r, QueryWork* work) const {
+  const WorkRead read(work != nullptr);
   meter_.start();
   bool hit = bvh_->has_intersection(r);
   QueryWork w = meter_.stop();

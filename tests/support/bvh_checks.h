@@ -220,6 +220,13 @@ class WorkMeter {
 // of `meter` (build with build_framework_bvh(meter.wrapped(), ...)).
 WorkTotals framework_work(const WorkMeter& meter, const FlatTree& tree, const std::vector<Ray>& rays);
 
+// Whether the query running now on this thread has its work read (closest()
+// or any() asked for a QueryWork or the leaves entered). Across the process
+// boundary every primitive test of such a query is seen one at a time; in
+// the others, whose counts nothing reads, the verifier may answer a leaf's
+// tests together (autograder/boundary/README.md).
+bool query_work_is_read();
+
 // The student's BVHAccel built over counting wrappers of `prims`.
 class CountedBVH {
  public:

@@ -84,17 +84,28 @@ inline std::string guard_reason(int max_ray_depth, double rr_continue_prob) {
 }
 
 // Lambertian (the student's P3T1 when it is the student's binary; in the
-// Part 4 binaries, the reference) that counts its samples in the guard.
+// Part 4 binaries, the reference) that counts its samples in the guard. It
+// holds the diffuse BSDF rather than being one: a qualified call
+// `DiffuseBSDF::sample_f` on it, which skips a subclass's override, has no
+// DiffuseBSDF to reach (a dynamic_cast finds none), so every sample counts.
 // Across the process boundary the worker rebuilds this and NormalMirror as
 // copies of its own (autograder/boundary/path_guard_copy.h: it may hold
 // nothing of the tests); a change here is made there too.
-class GuardedDiffuse : public DiffuseBSDF {
+class GuardedDiffuse : public BSDF {
  public:
-  using DiffuseBSDF::DiffuseBSDF;
+  explicit GuardedDiffuse(const Spectrum& albedo, const Spectrum& emission = Spectrum(0.0))
+      : lambertian_(albedo, emission) {}
+  Spectrum f(const Vec3& wo, const Vec3& wi) const override { return lambertian_.f(wo, wi); }
   Spectrum sample_f(const Vec3& wo, Vec3* wi, double* pdf, Rng& rng) const override {
     path_guard().count();
-    return DiffuseBSDF::sample_f(wo, wi, pdf, rng);
+    return lambertian_.sample_f(wo, wi, pdf, rng);
   }
+  Spectrum get_emission(const Vec3& wo) const override { return lambertian_.get_emission(wo); }
+  Spectrum albedo() const { return lambertian_.reflectance; }
+  Spectrum emission() const { return lambertian_.emission; }
+
+ private:
+  DiffuseBSDF lambertian_;
 };
 
 // ---------------------------------------------------------------------------

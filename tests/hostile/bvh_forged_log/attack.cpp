@@ -1,13 +1,13 @@
-// Hostile: across the process boundary each traversal's answer carries the
-// log of the primitive tests it made, and the tests count work from that log
-// (autograder/boundary/bvh_codec.h). Before the solution's traversal answers,
-// this one writes on the worker's link (descriptor 3) an answer of its own:
-// a hit at t = 1 on primitive 0 with an empty log, no work at all. The format
-// is public (the release ships the grader's source); the request's tag is
-// not, and it guesses 0. The verifier reads an answer whose tag is not its
-// call's, or, had the guess been right, the real answer as a stale one at its
-// next call: the link breaks, and each test that asks for a closest hit costs
-// only itself.
+// Hostile: across the process boundary the tests count a traversal's work by
+// the primitive tests it calls back to the verifier for (autograder/boundary/
+// bvh_codec.h); once, by a log of them in its answer. Before the solution's
+// traversal answers, this one writes on the worker's link (descriptor 3) an
+// answer of its own: a hit at t = 1 on primitive 0, with no primitive test
+// made, no work at all. The format is public (the release ships the grader's
+// source); the request's tag is not, and it guesses 0. The verifier reads an
+// answer whose tag is not its call's, or, had the guess been right, the real
+// answer as a stale one at its next call: the link breaks, and each test that
+// asks for a closest hit costs only itself.
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -33,8 +33,6 @@ void forge_closest_hit() {
   put(payload, pt::Vec3(1.0 / 3));             // barycentric
   put(payload, int64_t(0));                    // primitive 0
   put(payload, uint8_t(0));                    // no BSDF
-  put(payload, uint64_t(0));                   // node visits
-  put(payload, uint64_t(0));                   // an empty log
   std::string message(11, '\0');
   const uint32_t length = static_cast<uint32_t>(payload.size());
   const uint16_t call = 12;                    // BvhIntersect

@@ -1,12 +1,13 @@
 // Hostile: the tests count a traversal's work by the primitive tests they see
-// (tests/support/bvh_checks.h), and across the process boundary the worker
-// logs them (autograder/boundary/serve_part2.cpp). This closest-hit query
-// tests every primitive, linearly, and hides the work: it casts each
+// (tests/support/bvh_checks.h); across the process boundary each is a call
+// back to the verifier (autograder/boundary/serve_part2.cpp). This closest-hit
+// query tests every primitive, linearly, and hides the work: it casts each
 // primitive to the Triangle or Sphere it hopes lies behind it and calls that
-// class's own intersect, which no wrapper sees. The primitives it is given
-// are wrappers (the tests' counting ones, the worker's logged copies), not
-// triangles, so it finds nothing to call and says so: every test that asks
-// for a closest hit fails with that message, and no hidden work is credited.
+// class's own intersect, which no counter sees. The primitives it is given
+// are the tests' counting wrappers in one process and the worker's handles
+// (a box and an index, no geometry) across the boundary, not triangles, so it
+// finds nothing to call and says so: every test that asks for a closest hit
+// fails with that message, and no hidden work is credited.
 #include <stdexcept>
 #include <vector>
 
