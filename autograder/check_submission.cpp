@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "ignore_rules.h"
 #include "manifest.h"
 #include "submission.h"
 #include "submission_files.h"
@@ -64,7 +65,8 @@ std::map<std::string, std::string> sha256_of(const fs::path& source, const std::
 }
 
 // Step 3: every shipped file the grader has its own copy of, as shipped; and
-// nothing added where the build globs for sources.
+// nothing added where the build globs for sources, less what the release's
+// .gitignore ignores (node_modules/ after the viewer test's `npm ci`, renders).
 std::vector<std::string> edited_files(const fs::path& source, const json& shipped) {
   std::vector<std::string> names, problems;
   for (const auto& [name, hash] : shipped.items()) names.push_back(name);
@@ -76,11 +78,18 @@ std::vector<std::string> edited_files(const fs::path& source, const json& shippe
     else if (it->second != hash.get<std::string>())
       problems.push_back(name + ": edited");
   }
+  const IgnoreRules ignore = IgnoreRules::read((source / ".gitignore").string());
   for (const char* dir : {"skeleton", "tests"}) {
     if (!fs::is_directory(source / dir)) continue;
-    for (const auto& e : fs::recursive_directory_iterator(source / dir))
-      if (e.is_regular_file() && !shipped.contains(fs::relative(e.path(), source).generic_string()))
-        problems.push_back(fs::relative(e.path(), source).generic_string() + ": added");
+    for (auto it = fs::recursive_directory_iterator(source / dir); it != fs::recursive_directory_iterator(); ++it) {
+      const std::string rel = fs::relative(it->path(), source).generic_string();
+      if (it->is_directory() && ignore.ignored(rel, true)) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file() && !shipped.contains(rel) && !ignore.ignored(rel, false))
+        problems.push_back(rel + ": added");
+    }
   }
   return problems;
 }

@@ -10,7 +10,8 @@
 #     solution standing in, the comparison with its relMSE bound) and "Before
 #     you submit", exactly as written; every visible point (pt-grade run --json,
 #     expect_score.cmake), and check-submission says READY with each part's
-#     hidden points listed as not run;
+#     hidden points listed as not run, with what the .gitignore ignores
+#     (node_modules/ of `npm ci`, a render) left in the tree;
 #  6. check-submission on what the grader would refuse: a task file with a
 #     Boost header (the grader's rejection message), an edited and an added
 #     framework file (each named), both NOT READY.
@@ -63,7 +64,13 @@ cp "$source"/reference/part*.cpp tasks/
 run_section "Working on a part"
 "$grade" run --json reference-results.json
 cmake -DRESULTS=reference-results.json -P "$here/expect_score.cmake"
+# What the release's own instructions leave in its tree (the viewer test's
+# `npm ci`, a render saved beside a test) is no framework file added.
+mkdir -p tests/viewer/browser/node_modules/puppeteer-core
+echo '{"name": "puppeteer-core"}' > tests/viewer/browser/node_modules/puppeteer-core/package.json
+touch tests/part1/mine.png
 run_section "Before you submit" | tee check.out
+rm -rf tests/viewer/browser/node_modules tests/part1/mine.png
 grep -q '^READY' check.out || { echo "check-submission did not say READY"; exit 1; }
 for n in 1 2 3 4 5; do
   grep -Eq "^$n +([0-9]+) / \\1 +([0-9.]+) / \\2 .*hidden: [0-9]+ tests, [0-9.]+ points? not run here" check.out ||
