@@ -129,7 +129,8 @@ async function poll() {
       `${fmt(data.rays_per_second / 1e6)} Mrays/s · ETA ${duration(data.eta_seconds)} · ` +
       `${data.settings.width}×${data.settings.height}, ${data.threads} threads · page ${rate.toFixed(1)} updates/s`;
     $('error').style.display = data.error ? 'block' : 'none';
-    $('error').textContent = data.error ? 'A task threw: ' + data.error + '\nThe server is still up: fix the task, rebuild, and run --view again.' : '';
+    $('error').textContent = data.error ? 'A task threw: ' + data.error + (data.hint ? '\n' + data.hint : '') +
+      '\nThe server is still up: fix the task, rebuild, and run --view again.' : '';
     $('pause').textContent = data.state === 'paused' ? 'Resume' : 'Pause';
     $('camera-file').textContent = cameraText(data);
     if (view.shownVersion !== data.version && (view.show === 'render' || view.show === 'rate')) fetchImage();
