@@ -224,8 +224,14 @@ $('bvh-root').onclick = () => walk('');
 $('bvh-left').onclick = () => walk(view.bvhPath + 'l');
 $('bvh-right').onclick = () => walk(view.bvhPath + 'r');
 $('bvh-parent').onclick = () => walk(view.bvhPath.slice(0, -1));
+// The keys, except while typing in a field: a radio button or a button just
+// clicked keeps the focus, and the keys must work then too.
+function typing(el) {
+  return el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' ||
+    (el.tagName === 'INPUT' && !['radio', 'checkbox', 'button'].includes(el.type));
+}
 document.addEventListener('keydown', (e) => {
-  if (e.target.tagName === 'INPUT') return;
+  if (typing(e.target) || e.ctrlKey || e.metaKey || e.altKey) return;
   const k = e.key.toLowerCase();
   if (k === 'f') flip();
   if (view.mode !== 'bvh') return;
