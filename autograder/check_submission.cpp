@@ -10,7 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "check_answer.h"
 #include "command.h"
+#include "ignore_rules.h"
 #include "manifest.h"
 #include "submission.h"
 #include "submission_files.h"
@@ -28,8 +30,6 @@ json read_facts(const fs::path& source) {
                                                     "(in a course checkout, build the grader-kit and use pt-grade submission)");
   return json::parse(in);
 }
-
-void heading(const char* text) { std::printf("\n== %s\n", text); }
 
 std::string indented(const std::string& text) { return folded(text, "   "); }
 
@@ -64,7 +64,8 @@ std::map<std::string, std::string> sha256_of(const fs::path& source, const std::
 }
 
 // Step 3: every shipped file the grader has its own copy of, as shipped; and
-// nothing added where the build globs for sources.
+// nothing added where the build globs for sources, less what the release's
+// .gitignore ignores (node_modules/ after the viewer test's `npm ci`, renders).
 std::vector<std::string> edited_files(const fs::path& source, const json& shipped) {
   std::vector<std::string> names, problems;
   for (const auto& [name, hash] : shipped.items()) names.push_back(name);
@@ -76,11 +77,18 @@ std::vector<std::string> edited_files(const fs::path& source, const json& shippe
     else if (it->second != hash.get<std::string>())
       problems.push_back(name + ": edited");
   }
+  const IgnoreRules ignore = IgnoreRules::read((source / ".gitignore").string());
   for (const char* dir : {"skeleton", "tests"}) {
     if (!fs::is_directory(source / dir)) continue;
-    for (const auto& e : fs::recursive_directory_iterator(source / dir))
-      if (e.is_regular_file() && !shipped.contains(fs::relative(e.path(), source).generic_string()))
-        problems.push_back(fs::relative(e.path(), source).generic_string() + ": added");
+    for (auto it = fs::recursive_directory_iterator(source / dir); it != fs::recursive_directory_iterator(); ++it) {
+      const std::string rel = fs::relative(it->path(), source).generic_string();
+      if (it->is_directory() && ignore.ignored(rel, true)) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file() && !shipped.contains(rel) && !ignore.ignored(rel, false))
+        problems.push_back(rel + ": added");
+    }
   }
   return problems;
 }
@@ -113,10 +121,19 @@ int check_submission(const CheckOptions& opt) {
   std::vector<std::string> problems;  // each a way the grader's result will differ from this one
   std::map<int, std::string> not_graded;  // part -> the grader's reason
 
+  // The answer comes first, the steps that found it after: they are
+  // gathered here while progress goes to stderr.
+  std::string details;
+  auto say = [&details](const char* format, auto... args) {
+    char line[4096];
+    std::snprintf(line, sizeof line, format, args...);
+    details += line;
+  };
+  auto heading = [&details](const char* text) { details += std::string("\n== ") + text + "\n"; };
   std::printf("pt-grade check-submission %s: what the grader will do with these files.\n", opt.tasks.c_str());
   heading("1. The files, taken as the grader takes them");
   const Submission sub = read_submission(opt.tasks, expected);
-  for (const auto& n : sub.notes) std::fputs(indented(n).c_str(), stdout);
+  for (const auto& n : sub.notes) details += indented(n);
   if (!sub.problems.empty()) {
     std::string why = "submission rejected before building:";
     for (const auto& p : sub.problems) why += "\n  " + p;
@@ -126,7 +143,7 @@ int check_submission(const CheckOptions& opt) {
   }
   std::set<int> submitted;
   for (const auto& f : sub.files) {
-    std::printf("   %s: part %d\n", f.where.c_str(), f.part);
+    say("   %s: part %d\n", f.where.c_str(), f.part);
     submitted.insert(f.part);
     // Step 4 builds the release's tasks/: a submission elsewhere must be that.
     std::ifstream built(source / "tasks" / f.name, std::ios::binary);
@@ -143,25 +160,23 @@ int check_submission(const CheckOptions& opt) {
   for (const auto& f : sub.files) {
     const std::string rejected = intake_rejection(f, headers, nullptr);
     if (rejected.empty()) {
-      std::printf("   %s: accepted\n", f.where.c_str());
+      say("   %s: accepted\n", f.where.c_str());
       buildable.push_back(&f);
       continue;
     }
-    std::fputs(indented(rejected).c_str(), stdout);
+    details += indented(rejected);
     not_graded[f.part] = rejected;
     problems.push_back("part " + std::to_string(f.part) + ": rejected before building (step 2)");
   }
 
   heading("3. The files the grader has its own copy of");
   const auto edits = edited_files(source, facts.at("files"));
-  if (edits.empty()) std::printf("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
-  for (const auto& e : edits) std::printf("   %s\n", e.c_str());
+  if (edits.empty()) say("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
+  for (const auto& e : edits) say("   %s\n", e.c_str());
   if (!edits.empty()) {
-    std::fputs(indented("The grader builds your task files with its own copy of these files, not yours: a task file "
+    details += indented("The grader builds your task files with its own copy of these files, not yours: a task file "
                         "that needs your change will not build there, or behave as it does here. Undo the change "
-                        "(e.g. from the release's tarball) and move what you need into your task file.")
-                   .c_str(),
-               stdout);
+                        "(e.g. from the release's tarball) and move what you need into your task file.");
     problems.push_back(std::to_string(edits.size()) + " file(s) the grader has its own copy of differ (step 3)");
   }
 
@@ -174,9 +189,9 @@ int check_submission(const CheckOptions& opt) {
     const bool across = across_boundary(f->part);
     const std::string part = "part" + std::to_string(f->part);
     const std::string target = part + (across ? "_worker" : "_tests");
-    std::printf("   $ cmake --build %s --target %s%s\n", opt.build_dir.c_str(), target.c_str(),
-                across ? (" " + part + "_verify").c_str() : "");
-    std::fflush(stdout);
+    const std::string also = across ? " " + part + "_verify" : "";
+    say("   $ cmake --build %s --target %s%s\n", opt.build_dir.c_str(), target.c_str(), also.c_str());
+    std::fprintf(stderr, "building part %d ...\n", f->part);
     std::string out;
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::string> command{"cmake", "--build", build.string(), "--target", target};
@@ -186,7 +201,7 @@ int check_submission(const CheckOptions& opt) {
     if (rc != 0) {
       const std::string why = f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n" +
                               compiler_errors(out, source.string());
-      std::fputs(indented(why).c_str(), stdout);
+      details += indented(why);
       not_graded[f->part] = why;
       problems.push_back("part " + std::to_string(f->part) + ": does not build (step 4)");
       continue;
@@ -202,12 +217,12 @@ int check_submission(const CheckOptions& opt) {
       std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
                         "the standard library: rejected.\n";
       for (const auto& u : unexpected) why += "  " + u + "\n";
-      std::fputs(indented(why).c_str(), stdout);
+      details += indented(why);
       not_graded[f->part] = why;
       problems.push_back("part " + std::to_string(f->part) + ": reads files the grader refuses (step 4)");
       continue;
     }
-    std::printf("   part %d: built in %.0f s\n", f->part, std::round(took));
+    say("   part %d: built in %.0f s\n", f->part, std::round(took));
     if (across) {
       binaries[f->part] = (build / "tests" / (part + "_verify")).string();
       workers[f->part] = (build / "tests" / target).string();
@@ -237,16 +252,49 @@ int check_submission(const CheckOptions& opt) {
       report.parts.push_back(pending_part(part, tests, not_graded.count(part) ? not_graded[part] : "not built"));
   }
   report.complete = true;
-  print_report(report, false);
 
-  if (problems.empty()) {
-    std::printf("\nREADY: the grader will build and run these files as this check did; it also runs the hidden "
-                "tests, which this release does not have.\n");
-    return 0;
+  // The answer: per part, whose the file is, its visible score, what differs.
+  std::vector<PartAnswer> answers;
+  Report started = report;  // the parts whose failures say something: all but the untouched
+  started.parts.clear();
+  std::string folded_parts;
+  for (const auto& part : report.parts) {
+    PartAnswer a;
+    a.part = part.part;
+    a.earned = part.earned();
+    a.possible = part.possible();
+    if (auto h = report.hidden_not_run.find(part.part); h != report.hidden_not_run.end()) a.hidden = h->second;
+    const TaskFile* file = nullptr;
+    for (const auto& f : sub.files)
+      if (f.part == part.part) file = &f;
+    if (!file) {
+      a.state = "not submitted";
+    } else if (!part.graded) {
+      a.state = "not graded: see step " + std::string(binaries.count(part.part) ? "5" : "2 or 4");
+      a.differs = "scores 0";
+    } else if (untouched(part)) {
+      a.state = "not started";
+    } else {
+      a.state = task_file_state(file->text);
+    }
+    if (untouched(part)) {
+      int failed = 0;
+      for (const auto& t : part.tests) failed += !t.passed();
+      folded_parts += "  part " + std::to_string(part.part) + ": not started: its " + std::to_string(failed) +
+                      " visible tests fail with \"not implemented\" (./build/tests/part" + std::to_string(part.part) +
+                      "_tests lists them)\n";
+    } else {
+      started.parts.push_back(part);
+    }
+    answers.push_back(a);
   }
-  std::printf("\nNOT READY: the grader's result will differ from this check's:\n");
-  for (const auto& p : problems) std::printf("  - %s\n", p.c_str());
-  return 1;
+  print_answer(answers, problems);
+  std::printf("\nHow this check found it:\n");
+  std::fputs(details.c_str(), stdout);
+  if (!started.parts.empty()) print_report(started, false);
+  if (!folded_parts.empty()) std::printf("\nParts not started (folded):\n%s", folded_parts.c_str());
+  std::fflush(stdout);
+  return problems.empty() ? 0 : 1;
 }
 
 }  // namespace pt::grade

@@ -1,7 +1,7 @@
 #pragma once
 // `pt-grade check-submission [TASKS]`, in the student release: what the
 // grader will do with the task files, as far as a release without the hidden
-// tests can tell (issue 20). In the grader's order:
+// tests can tell. In the grader's order:
 //
 //  1. the files: the grader's own intake (submission_files.h), names and all;
 //  2. what each file includes: the grader's allowlist (source_scan.h), with
@@ -15,6 +15,11 @@
 //     the compiler's own list of the files it opened, as the grader checks it;
 //  5. the visible tests in the sandbox, scored as pt-grade run scores them,
 //     and per part the hidden points this release cannot run.
+//
+// It prints the answer first (check_answer.h: per part, whose the file is,
+// the visible score, what will differ at grading; READY or NOT READY), then
+// the steps above; the failures of a part not started (every visible test
+// "not implemented") are folded into one line.
 //
 // Exit status 0 when nothing above differs from what the grader will do
 // (whatever the score), 1 when something does, 2 when it could not check.

@@ -37,6 +37,11 @@ std::set<std::string> task_ids() {
 }
 
 TEST(HandoutIndex, EveryTaskHasASectionLabelledByItsHeading) {
+  // The stubs' tags are the list of tasks only where tasks/ holds the stubs:
+  // in the student release tasks/ is the student's work, tags removed as
+  // tasks are done.
+  if (!fs::is_directory(fs::path(PT_SOURCE_DIR) / "reference"))
+    GTEST_SKIP() << "tasks/ is the student's here: the stubs' tags are checked in the instructors' checkout";
   const HandoutIndex index = index_handouts((fs::path(PT_SOURCE_DIR) / "handouts").string());
   const std::set<std::string> ids = task_ids();
   ASSERT_GE(ids.size(), 16u) << "tasks/ should tag every task TODO(PnTm)";

@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.h"
+#include "app/part_origins.h"
 #include "app/viewer_entry.h"
 #include "app/viewer_server.h"
 #include "render/limits.h"
@@ -85,30 +86,13 @@ std::string check_adaptive(const std::vector<double>& a) {
 
 // A task left as a stub stops the render; say how to render meanwhile.
 std::string with_stub_hint(const std::string& message) {
-  const size_t at = message.find("not implemented: P");
-  if (at == std::string::npos || at + 18 >= message.size() || !std::isdigit((unsigned char)message[at + 18]))
-    return message;
-  const char part = message[at + 18];
-  return message + "\n  part " + part + " is not done in tasks/: to render with the course's solution of part " + part +
-         " meanwhile,\n  cmake --preset default -DPT_REFERENCE_PARTS=\"" + part +
-         "\" (a list: \"2;3\"), then build again; -DPT_REFERENCE_PARTS=\"\" undoes it";
+  const std::string hint = stub_hint(message);
+  return hint.empty() ? message : message + "\n  " + hint;
 }
 
 int bad_input(const std::string& message) {
   std::cerr << "error: " << with_stub_hint(message) << "\n";
   return kExitBadInput;
-}
-
-// "yours: 1, 2; the course's solution: 3, 4, 5".
-std::string part_origins(const std::string& student_parts) {
-  std::string yours, solution;
-  for (char n = '1'; n <= '5'; ++n) {
-    std::string& list = student_parts.find(n) != std::string::npos ? yours : solution;
-    list += std::string(list.empty() ? "" : ", ") + n;
-  }
-  return "parts from tasks/ (yours): " + (yours.empty() ? std::string("none") : yours) +
-         "; from the course's solution: " + (solution.empty() ? std::string("none") : solution) +
-         (yours.empty() || solution.empty() ? "" : " (PT_REFERENCE_PARTS)");
 }
 
 }  // namespace
@@ -118,7 +102,7 @@ ViewerEntry& viewer_entry() {
   return entry;
 }
 
-int run_cli(int argc, char** argv, const char* student_parts) {
+int run_cli(int argc, char** argv, const char* student_parts, const char* chosen_by) {
   CLI::App app{"Headless path tracer: renders SCENE to a PNG (tone-mapped) and an EXR (linear) beside it."};
   RenderSettings s;
   std::string scene_path, output = "render.png", camera_path;
@@ -188,7 +172,7 @@ int run_cli(int argc, char** argv, const char* student_parts) {
     if (std::string why = check_writable(path); !why.empty() && !scene_info && !view) return bad_input(why);
 
   // Before the scene: loading it builds the BVH, which is already part 2's code.
-  if (student_parts && !scene_info) std::fprintf(stderr, "%s\n", part_origins(student_parts).c_str());
+  if (student_parts && !scene_info) std::fprintf(stderr, "%s\n", part_origins(student_parts, chosen_by ? chosen_by : "").c_str());
   LoadedScene loaded;
   try {
     // The viewer builds the BVH itself, so that a student's construct_bvh

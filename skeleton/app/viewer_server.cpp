@@ -17,6 +17,7 @@
 
 #include <httplib.h>
 
+#include "app/part_origins.h"
 #include "app/viewer_entry.h"
 #include "app/viewer_inspect.h"
 #include "app/viewer_library.h"
@@ -149,6 +150,7 @@ struct ViewerServer::Impl {
     std::lock_guard<std::mutex> lock(mutex);
     return {{"state", st.state},
             {"error", st.error},
+            {"hint", stub_hint(st.error)},  // the option that lets the solution stand in
             {"spp", st.spp},
             {"target_spp", st.target_spp},
             {"rays_per_second", st.rays_per_second},

@@ -14,7 +14,8 @@ fail() { echo "$1: $2"; failures=$((failures + 1)); }
 
 # Read-only queries of the build: nothing here may rebuild or reconfigure.
 targets=$(ninja -C "$build" -t targets all 2>/dev/null | sed -n 's/^\([^ :]*\): .*/\1/p')
-presets=$(grep -o '"name": *"[^"]*"' "$src/CMakePresets.json" | sed 's/.*"\([^"]*\)"$/\1/')
+# "name": or "name" : (CMake's own JSON writer, as in the release's copy)
+presets=$(grep -o '"name" *: *"[^"]*"' "$src/CMakePresets.json" | sed 's/.*"\([^"]*\)"$/\1/')
 
 for doc in "$@"; do
   [ -f "$src/$doc" ] || { fail "$doc" "no such document"; continue; }

@@ -5,6 +5,7 @@
 // Triangle and Sphere intersection are the reference's here (Part 1).
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 
 #include "core/rng.h"
 #include "part2_common.h"
@@ -135,13 +136,15 @@ GRADED_TEST(BVHTraversal, NearerChildFirstAndPruned, "P2T3", 1.5, Visible) {
     }
   }
   testing::Test::RecordProperty("tests_per_ray", std::to_string(student.tests()));
-  EXPECT_LE(student.tests(), 1.5 * framework.tests() + 0.5)
-      << s.name << ": your closest-hit traversal makes " << student.tests()
+  // GoogleTest prints doubles at 17 digits (33.100000000000001), in its
+  // EXPECT_LE and in a message alike: averages of counts need 4.
+  EXPECT_TRUE(student.tests() <= 1.5 * framework.tests() + 0.5)
+      << std::setprecision(4) << s.name << ": your closest-hit traversal makes " << student.tests()
       << " primitive tests per ray; an ordered traversal with pruning by max_t on the same tree makes "
       << framework.tests() << ". Visit the child whose box the ray enters first, and skip a box whose entry t lies "
       << "beyond r.max_t.\n  yours:     " << student << "\n  framework: " << framework;
-  EXPECT_LE(student.nodes(), 1.5 * framework.nodes() + 1.0)
-      << s.name << ": your traversal reaches " << student.nodes() << " nodes per ray, the ordered one "
+  EXPECT_TRUE(student.nodes() <= 1.5 * framework.nodes() + 1.0)
+      << std::setprecision(4) << s.name << ": your traversal reaches " << student.nodes() << " nodes per ray, the ordered one "
       << framework.nodes();
 }
 

@@ -136,6 +136,8 @@ TEST(ViewerErrors, AThrowingTaskShowsItsMessageAndTheServerStaysUp) {
   json st = v.wait_until_finished();
   EXPECT_EQ(st["state"], "error");
   EXPECT_EQ(st["error"], "not implemented: P4T3 est_radiance_global_illumination");
+  // The page's banner names the option the command line names (app/part_origins.h).
+  EXPECT_NE(st["hint"].get<std::string>().find("-DPT_REFERENCE_PARTS=\"4\""), std::string::npos) << st.dump();
   // Still serving: the page, the BVH, a new setting (which fails the same way).
   auto page = v.client().Get("/");
   ASSERT_TRUE(page);

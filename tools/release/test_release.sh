@@ -4,13 +4,17 @@
 #  2. check it holds no solution (pt-release-check);
 #  3. run the set-up commands of its own README.md, exactly as written;
 #  4. the untouched stubs grade 0, every graded test failing with the name of
-#     its task (pt-grade check-stubs, per part);
+#     its task (pt-grade check-stubs, per part); check-submission says so
+#     first, each part "not started", its failures folded into one line;
 #  5. with the reference's task files copied in as a student's: the commands
 #     of the README's "Working on a part" (build, tests, score, render, the
 #     solution standing in, the comparison with its relMSE bound) and "Before
 #     you submit", exactly as written; every visible point (pt-grade run --json,
 #     expect_score.cmake), and check-submission says READY with each part's
-#     hidden points listed as not run;
+#     hidden points listed as not run, with what the .gitignore ignores
+#     (node_modules/ of `npm ci`, a render) left in the tree; every document
+#     of the release names only paths, build outputs, targets and tests that
+#     exist in it (tests/docs/check_docs.sh, as the checkout's documents);
 #  6. check-submission on what the grader would refuse: a task file with a
 #     Boost header (the grader's rejection message), an edited and an added
 #     framework file (each named), both NOT READY.
@@ -29,19 +33,7 @@ cd "$work/student-release"
 echo "== 2. no solution in the release"
 "$release_check" --release . --source "$source" --manifest "$manifest"
 
-# run_section HEADING: every command of every ```sh block under '## HEADING'
-# (up to the next '## '), comments off, each run as written; fails at the first
-# that fails.
-run_section() {
-  local cmds
-  cmds=$(awk -v h="## $1" '$0==h{s=1;next} s&&/^## /{exit} s&&/^ *```sh/{b=1;next} b&&/^ *```/{b=0;next} s&&b{print}' README.md |
-         sed 's/^[[:space:]]*//; s/[[:space:]]#.*$//; /^#/d' | sed '/^[[:space:]]*$/d')
-  [ -n "$cmds" ] || { echo "README.md has no commands under '## $1'"; exit 1; }
-  while IFS= read -r cmd; do
-    echo "\$ $cmd"
-    bash -c "$cmd"
-  done <<< "$cmds"
-}
+. "$here/readme_commands.sh"
 
 echo "== 3. the README's set-up commands"
 # PT_CCACHE_DIR (set by ctest when the instructor's build uses ccache): the
@@ -58,17 +50,39 @@ for n in 1 2 3 4 5; do
   "$grade" check-stubs --part "$n" "build/tests/part${n}_tests"
 done
 
+echo "== 4b. check-submission on the stubs leads with the answer, their failures folded"
+"$grade" check-submission > stubs-check.out 2> /dev/null || { cat stubs-check.out; echo "check-submission on the stubs: not READY"; exit 1; }
+head -n 12 stubs-check.out | grep -q '^READY' || { cat stubs-check.out; echo "the answer is not in the first 12 lines"; exit 1; }
+for n in 1 2 3 4 5; do
+  grep -Eq "^$n +not started +0 / [0-9.]+ +\+ hidden: [0-9]+ tests, [0-9.]+ points? not run here" stubs-check.out &&
+    grep -Eq "^  part $n: not started: its [0-9]+ visible tests fail" stubs-check.out ||
+    { cat stubs-check.out; echo "part $n: not answered as not started, or its failures not folded into one line"; exit 1; }
+done
+! grep -q '^Failed graded tests' stubs-check.out || { cat stubs-check.out; echo "an untouched part's failures listed one by one"; exit 1; }
+
 echo "== 5. the reference's task files, with the README's commands"
 cp "$source"/reference/part*.cpp tasks/
 run_section "Working on a part"
 "$grade" run --json reference-results.json
 cmake -DRESULTS=reference-results.json -P "$here/expect_score.cmake"
+# What the release's own instructions leave in its tree (the viewer test's
+# `npm ci`, a render saved beside a test) is no framework file added.
+mkdir -p tests/viewer/browser/node_modules/puppeteer-core
+echo '{"name": "puppeteer-core"}' > tests/viewer/browser/node_modules/puppeteer-core/package.json
+touch tests/part1/mine.png
 run_section "Before you submit" | tee check.out
+rm -rf tests/viewer/browser/node_modules tests/part1/mine.png
 grep -q '^READY' check.out || { echo "check-submission did not say READY"; exit 1; }
 for n in 1 2 3 4 5; do
-  grep -Eq "^$n +([0-9]+) / \\1 +([0-9.]+) / \\2 .*hidden: [0-9]+ tests, [0-9.]+ points? not run here" check.out ||
-    { echo "part $n: not every visible point, or its hidden points not listed as not run"; exit 1; }
+  grep -Eq "^$n +yours +([0-9.]+) / \\1 +\\+ hidden: [0-9]+ tests, [0-9.]+ points? not run here" check.out &&
+    grep -Eq "^$n +([0-9]+) / \\1 +([0-9.]+) / \\2 .*hidden: [0-9]+ tests, [0-9.]+ points? not run here" check.out ||
+    { echo "part $n: not yours with every visible point, or its hidden points not listed as not run"; exit 1; }
 done
+
+echo "== 5b. the release's documents name only what exists in it, as the checkout's do"
+cmake --build --preset default --target library-scenes pt-bvh-boxes-reference > /dev/null  # scenes/ and tools/bench/README.md say to
+mapfile -t docs < <(find . -name '*.md' -not -path './build/*' -not -path '*/node_modules/*' | sed 's|^\./||' | sort)
+"$source/tests/docs/check_docs.sh" "$PWD" "$PWD/build" "${docs[@]}"
 
 echo "== 6. check-submission on what the grader refuses"
 expect_not_ready() {  # expect_not_ready WHAT REGEX...: check-submission exits 1 and prints each REGEX

@@ -129,7 +129,8 @@ async function poll() {
       `${fmt(data.rays_per_second / 1e6)} Mrays/s · ETA ${duration(data.eta_seconds)} · ` +
       `${data.settings.width}×${data.settings.height}, ${data.threads} threads · page ${rate.toFixed(1)} updates/s`;
     $('error').style.display = data.error ? 'block' : 'none';
-    $('error').textContent = data.error ? 'A task threw: ' + data.error + '\nThe server is still up: fix the task, rebuild, and run --view again.' : '';
+    $('error').textContent = data.error ? 'A task threw: ' + data.error + (data.hint ? '\n' + data.hint : '') +
+      '\nThe server is still up: fix the task, rebuild, and run --view again.' : '';
     $('pause').textContent = data.state === 'paused' ? 'Resume' : 'Pause';
     $('camera-file').textContent = cameraText(data);
     if (view.shownVersion !== data.version && (view.show === 'render' || view.show === 'rate')) fetchImage();
@@ -223,8 +224,14 @@ $('bvh-root').onclick = () => walk('');
 $('bvh-left').onclick = () => walk(view.bvhPath + 'l');
 $('bvh-right').onclick = () => walk(view.bvhPath + 'r');
 $('bvh-parent').onclick = () => walk(view.bvhPath.slice(0, -1));
+// The keys, except while typing in a field: a radio button or a button just
+// clicked keeps the focus, and the keys must work then too.
+function typing(el) {
+  return el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' ||
+    (el.tagName === 'INPUT' && !['radio', 'checkbox', 'button'].includes(el.type));
+}
 document.addEventListener('keydown', (e) => {
-  if (e.target.tagName === 'INPUT') return;
+  if (typing(e.target) || e.ctrlKey || e.metaKey || e.altKey) return;
   const k = e.key.toLowerCase();
   if (k === 'f') flip();
   if (view.mode !== 'bvh') return;

@@ -125,10 +125,14 @@ async function main() {
     check(facts.hash !== rendered && facts.distinct > facts.pixels / 2, 'camera drag: the view changed and the image is not blank');
     await shot(page, '2_orbit');
 
-    // 3. BVH walk: root, then two levels down the left side.
+    // 3. BVH walk: root, then two levels down the left side: the first by
+    // the L key with the focus still on the radio button just clicked.
     await page.click('input[value=bvh]');
     await page.waitForFunction(() => window.viewer.bvh && window.viewer.bvh.path === '', { timeout: TIMEOUT });
-    await page.click('#bvh-left');
+    await page.keyboard.press('l');
+    const keyed = await page.waitForFunction(() => window.viewer.bvh.path === 'l', { timeout: 5000 }).then(() => true, () => false);
+    check(keyed, 'the L key walks the tree right after a click on the "BVH walk" radio button');
+    if (!keyed) await page.click('#bvh-left');
     await page.waitForFunction(() => window.viewer.bvh.path === 'l', { timeout: TIMEOUT });
     await page.click('#bvh-left');
     await page.waitForFunction(() => window.viewer.bvh.path === 'll', { timeout: TIMEOUT });

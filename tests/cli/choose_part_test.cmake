@@ -1,0 +1,46 @@
+# skeleton/app/choose_part.cmake on made-up task files (ctest cli:choose-part):
+# which side of a part `pathtracer` links. -DSCRIPT=<choose_part.cmake>
+# -DAR=<ar> -DWORK=<scratch folder>.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(WRITE ${WORK}/student.o "student")
+file(WRITE ${WORK}/solution.o "solution")
+execute_process(COMMAND ${AR} qc ${WORK}/libsolution.a ${WORK}/solution.o)
+
+# expect_side(<case> <task file text> <choice> <solution> <yours|solution>)
+function(expect_side name text choice solution expected)
+  file(WRITE ${WORK}/${name}.cpp "${text}")
+  execute_process(COMMAND ${CMAKE_COMMAND} -DPART=3 -DCHOICE=${choice} -DTASK_FILES=${WORK}/${name}.cpp
+                          -DSTUDENT=${WORK}/student.o -DSOLUTION=${solution} -DAR=${AR}
+                          -DARCHIVE=${WORK}/${name}.a -DHEADER=${WORK}/${name}.h -P ${SCRIPT}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name}: choose_part.cmake failed: ${err}")
+  endif()
+  execute_process(COMMAND ${AR} t ${WORK}/${name}.a OUTPUT_VARIABLE members OUTPUT_STRIP_TRAILING_WHITESPACE)
+  file(READ ${WORK}/${name}.h header)
+  if(expected STREQUAL "yours")
+    set(want_member student.o)
+    set(want_header "#define PT_PART3_FROM_TASKS \"3\"\n")
+  else()
+    set(want_member solution.o)
+    set(want_header "#define PT_PART3_FROM_TASKS \"\"\n")
+  endif()
+  if(NOT members STREQUAL want_member OR NOT header STREQUAL want_header)
+    message(FATAL_ERROR "${name}: expected ${expected}'s side, got archive [${members}] and header [${header}]")
+  endif()
+  message(STATUS "${name}: ${expected}")
+endfunction()
+
+set(stub "Spectrum f() {\n  // TODO(P3T1)\n  throw NotImplemented(\"P3T1 DiffuseBSDF::f\");\n}\n")
+set(done "Spectrum f() { return albedo / kPi; }\n")
+set(half "${done}Spectrum g() {\n  throw pt::NotImplemented(\"P3T2 g\");\n}\n")
+set(commented "${done}// throw NotImplemented(\"P3T1 DiffuseBSDF::f\");\n/* was: throw\n NotImplemented(\"P3T2\"); */\n")
+expect_side(stub_auto "${stub}" auto ${WORK}/solution.o solution)
+expect_side(half_done_auto "${half}" auto ${WORK}/solution.o solution)
+expect_side(done_auto "${done}" auto ${WORK}/solution.o yours)
+expect_side(commented_throw_auto "${commented}" auto ${WORK}/solution.o yours)
+expect_side(stub_chosen_yours "${stub}" yours ${WORK}/solution.o yours)
+expect_side(done_chosen_solution "${done}" solution ${WORK}/solution.o solution)
+expect_side(stub_prebuilt_archive "${stub}" auto ${WORK}/libsolution.a solution)
+expect_side(stub_without_solution "${stub}" auto "" yours)
