@@ -163,8 +163,9 @@ void serve_callbacks(Link& link) {
     if (!g_tracer) throw std::runtime_error("est_radiance_global_illumination called outside a pixel's sampling");
     const auto ray = args.get<Ray>();
     auto rng = args.get<Rng>();
+    // Field by field: a Ray's padding is whatever the worker left there.
     Writer received;
-    received.put(ray).put(rng);
+    received.put(ray.o).put(ray.d).put(ray.min_t).put(ray.max_t).put(ray.depth).put(rng);
     through_tape(Call::EstRadiance, received.bytes(), result, [&](Writer& answer) {
       Rng state = rng;
       answer.put(g_tracer->est_radiance_global_illumination(ray, state)).put(state);

@@ -211,21 +211,21 @@ TEST(BoundaryRuns, AGeneratorLeftAloneIsAllowed) {
 
 TEST(BoundaryRuns, RandomnessFromElsewhereFailsAReplay) {
   // A static generator that leaves the one passed in alone, std::rand: the
-  // same call from the same state gives another answer. A run of 8 or more
-  // always has one of its answers replayed, so 15 calls (runs of 1, 2, 4, 8)
-  // are enough.
+  // same call from the same state gives another answer. A run of 16 or more
+  // always has one of its answers replayed, so 31 calls (runs of 1, 2, 4, 8,
+  // 16) are enough.
   FakeWorker worker;
   worker.function = [](double arg, Rng&) {
     static Rng own(1);
     return arg + own.uniform();
   };
   RepeatedCall<double> runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f");
-  EXPECT_NE(loop(runs, worker, 15).find("DiffuseBSDF::sample_f: its answer is not a function of its arguments and the "
+  EXPECT_NE(loop(runs, worker, 31).find("DiffuseBSDF::sample_f: its answer is not a function of its arguments and the "
                                         "generator passed in"),
             std::string::npos);
   worker.function = [](double arg, Rng& rng) { return estimator(arg, rng) + std::rand() * 1e-12; };
   RepeatedCall<double> with_rand(Call::DirectImportance, "the estimator");
-  EXPECT_NE(loop(with_rand, worker, 15).find("not a function of its arguments"), std::string::npos);
+  EXPECT_NE(loop(with_rand, worker, 31).find("not a function of its arguments"), std::string::npos);
 }
 
 TEST(BoundaryRuns, AnAverageOfEarlierAnswersFailsAReplay) {
@@ -243,7 +243,7 @@ TEST(BoundaryRuns, AnAverageOfEarlierAnswersFailsAReplay) {
     return sum / double(raw.size());
   };
   RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
-  EXPECT_NE(loop(runs, worker, 15).find("not a function of its arguments"), std::string::npos);
+  EXPECT_NE(loop(runs, worker, 31).find("not a function of its arguments"), std::string::npos);
 }
 
 TEST(BoundaryRuns, ATestsOwnReplayIsAnsweredAsTheFirstTime) {

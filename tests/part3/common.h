@@ -73,13 +73,15 @@ inline const char* name(Method m) {
                                    : "one_bounce_radiance";
 }
 
-// One estimate, as a function of the generator (support/replayed_draws.h).
+// One estimate, as a function of the generator (support/replayed_draws.h),
+// each call on a fresh copy of the ray (intersecting one shortens its max_t).
 inline Spectrum estimate(const PathTracer& t, const Ray& ray, const Intersection& isect, Method m, Rng& rng) {
   return test::replayed(name(m), rng, [&](Rng& r) {
+    const Ray fresh = ray;
     switch (m) {
-      case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(ray, isect, r);
-      case Method::Importance: return t.estimate_direct_lighting_importance(ray, isect, r);
-      default: return t.one_bounce_radiance(ray, isect, r);
+      case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(fresh, isect, r);
+      case Method::Importance: return t.estimate_direct_lighting_importance(fresh, isect, r);
+      default: return t.one_bounce_radiance(fresh, isect, r);
     }
   });
 }

@@ -92,13 +92,14 @@ enum class Entry {
 inline const char* name(Entry e);
 
 // One estimate, as a function of the generator (support/replayed_draws.h): a
-// replayed call gets a path guard of its own too.
+// replayed call gets a path guard of its own too, and a fresh copy of the ray
+// (intersecting a ray shortens its max_t, which is mutable).
 inline Spectrum estimate_once(const PathTracer& t, const Aim& a, Entry e, Rng& rng) {
   return test::replayed(name(e), rng, [&](Rng& r) {
     path_guard().reset(guard_limit(t.settings.max_ray_depth, t.settings.rr_continue_prob),
                        guard_reason(t.settings.max_ray_depth, t.settings.rr_continue_prob));
-    if (e == Entry::GlobalIllumination) return t.est_radiance_global_illumination(a.ray, r);
     Ray ray = a.ray;
+    if (e == Entry::GlobalIllumination) return t.est_radiance_global_illumination(ray, r);
     ray.depth = t.settings.max_ray_depth;  // the bounces still allowed at the first hit
     return t.at_least_one_bounce_radiance(ray, a.isect, r);
   });
