@@ -18,11 +18,11 @@
 //    idiom (the price of not flagging every loop header);
 //  * any file but the handouts names a hidden test (Suite.Name, or a Name of
 //    10 characters or more): the handouts name and describe every hidden test
-//    on purpose (issue 8), everything else must not;
+//    on purpose, everything else must not;
 //  * what a student reads (the documents, the framework's headers, the task
 //    files, the visible tests and their support) names a path of the course's
 //    folders that the release does not hold (a README left behind by a move,
-//    `reference/`, DESIGN.md), with the file and line (issue 20);
+//    `reference/`, DESIGN.md), with the file and line;
 //  * a prebuilt library keeps a local symbol (a helper's name says how the
 //    solution works: strip -x), or an image's sidecar keeps a commit hash.
 #include <algorithm>

@@ -4,7 +4,7 @@
 # name in a comment, a hidden/ folder, a hidden contract table's rows in the
 # visible one, a source file among the scene library's reference images and a
 # reference/ folder elsewhere; and what a
-# student would be misled by (issue 20): a document naming a path the release
+# student would be misled by: a document naming a path the release
 # does not hold, a quoted failure whose line is not an assertion, a prebuilt
 # library with a local symbol, an image sidecar with a commit hash. Each alone.
 # Usage: test_release_check.sh RELEASE_DIR CHECKOUT RELEASE_CHECK MANIFEST WORKDIR

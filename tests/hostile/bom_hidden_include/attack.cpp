@@ -2,7 +2,7 @@
 // Hostile: a UTF-8 byte-order mark before the first directive (above). GCC
 // skips the mark, so line 1 is an #include; a scanner that reads the line as
 // text finds three bytes that are not '#' at its start, and did not see it
-// (27.5/27.5 from the stubs on main before issue 17).
+// (27.5/27.5 from the stubs on main before the process boundary).
 // The listener, appended from a static initializer, clears each test's
 // result once it ends, so that every test passes. TestResult::Clear() is
 // private; an explicit instantiation may name it all the same.

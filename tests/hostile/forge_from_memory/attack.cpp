@@ -1,4 +1,4 @@
-// Hostile: the review's forgery (issue 17). The verdict channel's key lives
+// Hostile: the review's forgery (an earlier review). The verdict channel's key lives
 // in the memory of the process that runs the tests. The first task call
 // scans the program's data for it (64 hexadecimal digits and a NUL) and, with
 // what it finds or with a key of its own, writes a start record and a passed

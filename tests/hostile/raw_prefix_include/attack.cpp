@@ -2,7 +2,7 @@
 // scanner that takes any R before a quote as one; the compiler sees the
 // identifier fuR and an ordinary string "(". The raw string such a scanner
 // imagines runs to the `)"` in the comment after the #include, which it then
-// never reads as a directive (27.5/27.5 from the stubs on main before issue 17).
+// never reads as a directive (27.5/27.5 from the stubs on main before the process boundary).
 #define PT_IGNORE(x) 0
 static int pt_ignored = PT_IGNORE(fuR"(");
 #include <gtest/gtest.h>  // )"

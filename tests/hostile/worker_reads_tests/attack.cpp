@@ -1,5 +1,5 @@
-// Hostile: read the hidden tests from where the task code runs (issue 17,
-// item 4). Across the process boundary the tests are in the kit's verifier,
+// Hostile: read the hidden tests from where the task code runs (a review of the
+// process boundary). Across the process boundary the tests are in the kit's verifier,
 // a process and a file beside the worker. The first task call opens the
 // verifier's file (the gallery writes in the kit's real path, the worst case:
 // a student who guessed the layout) and looks through /proc for a process
