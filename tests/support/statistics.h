@@ -234,8 +234,6 @@ struct Grid2D {
   int cell(double x, double y) const;  // -1 when (x, y) is outside
   double cell_x0(int i) const { return x0 + (x1 - x0) * i / nx; }
   double cell_y0(int j) const { return y0 + (y1 - y0) * j / ny; }
-  double cell_width() const { return (x1 - x0) / nx; }
-  double cell_height() const { return (y1 - y0) / ny; }
 };
 
 // Integral of density over every cell of the grid, by adaptive 2-D Simpson
