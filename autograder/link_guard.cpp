@@ -73,6 +73,24 @@ std::vector<std::string> section_names(const std::string& file) {
   return names;
 }
 
+// The signatures of the object's COMDAT groups: the inline functions and
+// template instantiations the compiler made, each kept once in the program.
+std::set<std::string> comdat_signatures(const std::string& file) {
+  std::string out;
+  if (run_command({"readelf", "-g", "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
+  std::set<std::string> names;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("COMDAT group section", 0) != 0) continue;
+    // COMDAT group section [    1] `.group' [SIGNATURE] contains 1 sections:
+    const auto open = line.find("' [");
+    if (open == std::string::npos) continue;
+    const auto close = line.find(']', open + 3);
+    if (close != std::string::npos) names.insert(line.substr(open + 3, close - open - 3));
+  }
+  return names;
+}
+
 std::string demangle(const std::string& name) {
   int status = 0;
   std::unique_ptr<char, void (*)(void*)> d(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status), std::free);
@@ -85,10 +103,12 @@ bool is_global(char type) { return (type >= 'A' && type <= 'Z' && type != 'U') |
 bool is_weak(char type) { return type == 'W' || type == 'V' || type == 'u'; }
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-// The namespaces of the test side: the test support's (tests/support/) and
-// GoogleTest's. The framework (skeleton/) uses pt:: alone.
-const char* const kTestNamespaces[] = {"pt::test::", "pt::grading::", "pt::library::", "pt::error_model::",
-                                       "pt::stats::", "testing::"};
+// The namespaces that are not a task file's: the test support's
+// (tests/support/), GoogleTest's, the process boundary's (the worker's own
+// code, autograder/boundary/) and the grader's. The framework (skeleton/)
+// uses pt:: alone.
+const char* const kTestNamespaces[] = {"pt::test::",  "pt::grading::", "pt::library::", "pt::error_model::",
+                                       "pt::stats::", "testing::",     "pt::boundary::", "pt::grade::"};
 
 // Framework functions that do a task's work for the renderer: the budgeted
 // renderer's allocator is P5T3's answer, so a task file may not call it.
@@ -192,6 +212,7 @@ int main(int argc, char** argv) {
       for (const auto& section : section_names(object))
         if (starts_with(section, ".preinit_array") || section == ".init")
           refuse("has a " + section + " section: code that runs before the test main");
+      const std::set<std::string> comdat = comdat_signatures(object);
       for (const auto& s : defined_symbols(object, false)) {
         const std::string name = demangle(s.name);
         if (s.type == 'i') {
@@ -205,13 +226,21 @@ int main(int argc, char** argv) {
         if (s.name == "main")
           refuse("defines main()");
         else if (!test_ns.empty())
-          refuse(kind + name + ", in " + test_ns + ", which belongs to the tests, their support or GoogleTest");
+          refuse(kind + name + ", in " + test_ns +
+                 ", which belongs to the tests, their support, GoogleTest, the process boundary or the grader");
         else if (test_symbols.count(s.name) && (strong || !header_instantiation(s.name)))
           refuse(kind + name + ", which the tests or their support define: it could replace theirs");
         else if (strong && framework_symbols.count(s.name))
           refuse("defines " + name + ", which the test framework or the skeleton defines: it would replace theirs");
-        else if ((strong || !starts_with(s.name, "_Z")) && library_symbols.count(s.name))
-          refuse("defines " + name + ", which the C or C++ library defines: it would replace the library's everywhere");
+        // A definition in the program, even a weak one, replaces a shared
+        // library's for every caller (std::string::_M_append, say, which the
+        // boundary's link sends its answers through). The compiler's own
+        // copies of the headers' inline functions are COMDAT groups (std::endl
+        // makes std::ctype<char>::do_widen): those are the headers' code; a
+        // weak definition outside a group is the task file's own.
+        else if (library_symbols.count(s.name) && (strong || !comdat.count(s.name)))
+          refuse((strong ? "defines " : "defines a weak ") + name +
+                 ", which the C or C++ library exports: it would replace the library's everywhere");
       }
       // What the task file uses must come from the framework or the
       // libraries: the tests' own code (the support's BVH builder, its
