@@ -21,7 +21,7 @@
 namespace pt::grade::confine {
 
 struct Plan {
-  bool user_ns = false, pid_ns = false, mount_ns = false;  // clone() flags
+  bool user_ns = false, pid_ns = false, mount_ns = false, ipc_ns = false;  // clone() flags
   bool tmpfs = false, proc = false;                        // mounts in the mount namespace
   bool switch_user = false;
   uid_t uid = 0;

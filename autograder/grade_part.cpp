@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -20,6 +21,7 @@
 #include <sstream>
 
 #include "boundary/one_cpu.h"
+#include "report_text.h"
 #include "verdicts.h"
 
 namespace pt::grade {
@@ -45,6 +47,28 @@ std::string last_lines(const std::string& output, size_t max_lines = 12) {
   std::string out;
   for (const auto& l : lines) out += (out.empty() ? "" : "\n") + l;
   return out;
+}
+
+// What the test `name` printed itself: the lines after GoogleTest's
+// "[ RUN      ] name", never those of the tests before it in the run (a
+// suite's hidden tests run before its visible ones, and their names and
+// results are not a visible test's to show). Nothing when its start was not
+// kept.
+std::string own_output(const std::string& output, const std::string& name) {
+  const std::string start = "[ RUN      ] " + name + "\n";
+  const size_t at = output.rfind(start);
+  if (at == std::string::npos) return "";
+  return last_lines(output.substr(at + start.size()));
+}
+
+// `text` without the folders of the binaries graded (the grading kit's, the
+// build's): a report names files, not where the grader keeps them.
+void hide_folders(std::string& text, const std::vector<std::string>& folders) {
+  for (const std::string& folder : folders) {
+    if (folder.size() < 2) continue;
+    const std::string prefix = folder + "/";
+    for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+  }
 }
 
 // Follows one run's records and decides its deadline: the per-test limit,
@@ -254,10 +278,15 @@ double PartResult::possible() const {
 PartResult pending_part(int part, const PartManifest& tests, const std::string& why) {
   PartResult r;
   r.part = part;
+  // A long reason (an intake's refusals, a compiler's errors) once, in the
+  // part's notes; each test says its first lines.
+  const std::string each = summary(why, "the whole message is in the report's notes, under part " +
+                                            std::to_string(part));
+  if (each != why) r.notes.push_back(why);
   for (const auto& t : tests) {
     TestResult tr;
     tr.test = t;
-    tr.message = why;
+    tr.message = each;
     r.tests.push_back(std::move(tr));
   }
   return r;
@@ -340,6 +369,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     }
 
     const VerdictStream& s = watch.stream();
+    bool hidden_ran = false;  // in this run, before the test that died
     ignored += s.ignored();
     threads_at_main = std::max(threads_at_main, s.threads_at_main());
     size_t resolved = 0;
@@ -358,6 +388,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       if (t.status == TestResult::Status::Skipped) t.message = "skipped (a skipped test earns no points)";
       if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
       t.seconds = v.seconds;
+      hidden_ran = hidden_ran || t.test.hidden;
       ++resolved;
     }
     if (worker_never_started) {
@@ -380,7 +411,14 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
                   : worker_lost ? "the worker running the task's code " + worker_run.exit.describe() + " during this test"
                   : run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
                                                       : why_died(run.exit, watch, limits);
-      t.output = last_lines(worker_lost || worker_broke_link ? worker_run.output : run.output);
+      // The worker's output is the whole run's, hidden tests' calls included:
+      // shown only when no hidden test ran before this one in the run.
+      if (worker_lost || worker_broke_link)
+        t.output = hidden_ran ? "(the worker's output is not shown: hidden tests ran in the same process before this "
+                                "test)"
+                              : last_lines(worker_run.output);
+      else
+        t.output = own_output(run.output, t.test.name);
       (hung ? timed_out : crashed) += 1;
       if (hung) hung_tasks.insert(t.test.task);
       ++resolved;
@@ -413,7 +451,13 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
   }
   res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   size_t redacted = 0;
-  for (auto& t : res.tests) redacted += redactor.redact(t.message) + redactor.redact(t.output);
+  const std::vector<std::string> folders{std::filesystem::path(binary).parent_path().string(),
+                                         worker.empty() ? "" : std::filesystem::path(worker).parent_path().string()};
+  for (auto& t : res.tests) {
+    redacted += redactor.redact(t.message) + redactor.redact(t.output);
+    hide_folders(t.message, folders);
+    hide_folders(t.output, folders);
+  }
   if (redacted > 0)
     res.notes.push_back(std::to_string(redacted) +
                         " line(s) of the solution were removed from the tests' messages: the submission printed "

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "atomic_file.h"
+#include "report_text.h"
 
 namespace pt::grade {
 
@@ -70,9 +71,10 @@ std::string plain(const std::string& md) {
   return out;
 }
 
-std::string image(const std::string& path, const std::string& alt) {
+std::string image(const std::string& path, const std::string& alt, size_t* image_bytes) {
   const std::string b64 = base64_file(path);
   if (b64.empty()) return "<div class=muted>(" + esc(alt) + ": no image)</div>";
+  *image_bytes += b64.size();
   return "<img alt=\"" + esc(alt) + "\" src=\"data:image/png;base64," + b64 + "\">";
 }
 
@@ -100,7 +102,10 @@ std::string base64_file(const std::string& path) {
   return out;
 }
 
-void write_html_report(const std::string& path, const HtmlReport& page) {
+namespace {
+
+// The page with every text within `bounds`; *image_bytes: what its images take.
+std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* image_bytes) {
   const Report& r = *page.report;
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>"
@@ -154,7 +159,7 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
     if (one_reason && p.tests.size() > 1) {
       any_failure = true;
       h << "<div class=fail><h3>Part " << p.part << ": all " << p.tests.size() << " tests, " << num(p.possible())
-        << " points</h3><pre>" << esc(p.tests.front().message) << "</pre></div>\n";
+        << " points</h3><pre>" << esc(capped(p.tests.front().message, bounds.message)) << "</pre></div>\n";
       continue;
     }
     for (const auto& t : p.tests) {
@@ -170,8 +175,10 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
       auto ref = page.handouts.tasks.find(t.test.task);
       if (ref != page.handouts.tasks.end())
         h << "<div class=muted>Read: " << esc(ref->second.file) << " §" << esc(plain(ref->second.section)) << "</div>";
-      h << "<pre>" << esc(t.message.substr(0, 6000)) << (t.message.size() > 6000 ? "\n..." : "") << "</pre>";
-      if (!t.output.empty()) h << "<div class=muted>Last output before it stopped:</div><pre>" << esc(t.output) << "</pre>";
+      h << "<pre>" << esc(capped(t.message, bounds.message)) << "</pre>";
+      if (!t.output.empty())
+        h << "<div class=muted>Last output before it stopped:</div><pre>" << esc(capped(t.output, bounds.output))
+          << "</pre>";
       h << "</div>\n";
     }
   }
@@ -187,7 +194,7 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
     h << esc(c.settings) << "; the submission's part(s) " << (parts.empty() ? "none" : parts)
       << ", the solution for the rest. ";
     if (!c.error.empty()) {
-      h << "<span class=flag>The render failed: " << esc(c.error) << "</span></p>\n";
+      h << "<span class=flag>The render failed: " << esc(capped(c.error, bounds.note)) << "</span></p>\n";
       continue;
     }
     if (c.relmse >= 0) {
@@ -199,25 +206,23 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
                             (c.suspect.empty() ? std::string() : ": look at " + esc(c.suspect)) + "</span>"
                       : " <span class=ok>within what the sample count explains</span>");
     }
-    h << "</p>\n<div class=renders><figure>" << image(c.student_png, "submission") << "<figcaption>submission</figcaption></figure>"
-      << "<figure>" << image(c.reference_png, "reference") << "<figcaption>stored reference</figcaption></figure>"
-      << "<figure>" << image(c.difference_png, "difference")
+    h << "</p>\n<div class=renders><figure>" << image(c.student_png, "submission", image_bytes) << "<figcaption>submission</figcaption></figure>"
+      << "<figure>" << image(c.reference_png, "reference", image_bytes) << "<figcaption>stored reference</figcaption></figure>"
+      << "<figure>" << image(c.difference_png, "difference", image_bytes)
       << "<figcaption>|difference| of illuminance, false colour: red = "
       << (c.difference_scale > 0 ? num(c.difference_scale, "%.3g") + ", twice the 99th percentile of a correct render's noise"
                                  : std::string("the 99th percentile"))
       << "</figcaption></figure></div>\n";
-    if (!c.detail.empty()) h << "<p class=muted>" << esc(c.detail) << "</p>\n";
+    if (!c.detail.empty()) h << "<p class=muted>" << esc(capped(c.detail, bounds.note)) << "</p>\n";
   }
 
   // For the instructor.
   h << "<h2>For the instructor</h2>\n";
   if (!r.instructor_notes.empty()) {
     h << "<p>Source flags (they do not change the score; each is a place to read):</p>";
-    for (const auto& n : r.instructor_notes) h << "<pre>" << esc(n) << "</pre>";
+    h << "<pre>" << esc(instructor_text(r, bounds)) << "</pre>";
   }
-  std::vector<std::string> notes = r.notes;
-  for (const auto& p : r.parts)
-    for (const auto& n : p.notes) notes.push_back("part " + std::to_string(p.part) + ": " + n);
+  const std::vector<std::string> notes = all_notes(r, bounds);
   if (!notes.empty()) {
     h << "<ul>";
     for (const auto& n : notes) h << "<li><pre>" << esc(n) << "</pre></li>";
@@ -233,7 +238,21 @@ void write_html_report(const std::string& path, const HtmlReport& page) {
     h << ".</p>\n";
   }
   h << "</body></html>\n";
-  write_file_atomically(path, h.str());
+  return h.str();
+}
+
+}  // namespace
+
+void write_html_report(const std::string& path, const HtmlReport& page) {
+  TextBounds bounds;
+  std::string text;
+  for (;;) {
+    size_t image_bytes = 0;
+    text = html_page(page, bounds, &image_bytes);
+    if (text.size() - image_bytes <= kMaxHtmlTextBytes || bounds.message <= 256) break;
+    bounds = bounds.halved();
+  }
+  write_file_atomically(path, text);
 }
 
 }  // namespace pt::grade

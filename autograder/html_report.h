@@ -42,6 +42,12 @@ struct HtmlReport {
   std::string renders_note;  // why there are none, or how they were made
 };
 
+// The page's text besides its images (the renders, whose number and sizes
+// are the kit's scene library's) is at most this many bytes, whatever the
+// submission does: the texts are capped (report_text.h), and halved until
+// they fit.
+inline constexpr size_t kMaxHtmlTextBytes = 2u << 20;
+
 // Writes the page atomically; throws std::runtime_error naming the file.
 void write_html_report(const std::string& path, const HtmlReport& page);
 

@@ -17,6 +17,7 @@
 //  - sent SIGTERM when the grader dies, which `timeout` passes on to the
 //    compiler: a grader killed from outside leaves no build running
 //    (tests/hostile/grader_killed_building);
+//  - in an IPC namespace of its own where the kernel allows one;
 //  - with at most 1 MiB of its output kept (and the kit's compiler stops
 //    after 20 errors), so that an error flood costs the grader no memory
 //    (tests/hostile/error_flood).

@@ -7,10 +7,13 @@
 // test main reports its verdicts).
 //
 //   pt-link-guard OBJECT... --tests FILE... --framework FILE... --libraries SHARED_LIBRARY...
+//                 [--solutions FILE...]
 //
-// OBJECT: the task file's objects. --tests: the test side of the link (test
-// main, support, the tests, GoogleTest); --framework: the rest (skeleton, the
-// other parts' solution).
+// OBJECT: the task file's objects (partN_*.o: the N says whose). --tests: the
+// test side of the link (test main, support, the tests, GoogleTest);
+// --framework: the rest (skeleton, the other parts' solution); --solutions:
+// the other parts' solutions again (partM in each name), whose functions a
+// task file calls only where part_calls.h says its part may.
 // SHARED_LIBRARY: libc, libm, libstdc++, libgcc_s. Exit status 0 when the
 // objects are clean, 1 when not (each reason on stderr), 2 when it could not
 // tell.
@@ -20,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -27,6 +31,7 @@
 #include <vector>
 
 #include "command.h"
+#include "part_calls.h"
 
 namespace {
 
@@ -73,6 +78,24 @@ std::vector<std::string> section_names(const std::string& file) {
   return names;
 }
 
+// The signatures of the object's COMDAT groups: the inline functions and
+// template instantiations the compiler made, each kept once in the program.
+std::set<std::string> comdat_signatures(const std::string& file) {
+  std::string out;
+  if (run_command({"readelf", "-g", "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
+  std::set<std::string> names;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("COMDAT group section", 0) != 0) continue;
+    // COMDAT group section [    1] `.group' [SIGNATURE] contains 1 sections:
+    const auto open = line.find("' [");
+    if (open == std::string::npos) continue;
+    const auto close = line.find(']', open + 3);
+    if (close != std::string::npos) names.insert(line.substr(open + 3, close - open - 3));
+  }
+  return names;
+}
+
 std::string demangle(const std::string& name) {
   int status = 0;
   std::unique_ptr<char, void (*)(void*)> d(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status), std::free);
@@ -85,14 +108,31 @@ bool is_global(char type) { return (type >= 'A' && type <= 'Z' && type != 'U') |
 bool is_weak(char type) { return type == 'W' || type == 'V' || type == 'u'; }
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-// The namespaces of the test side: the test support's (tests/support/) and
-// GoogleTest's. The framework (skeleton/) uses pt:: alone.
-const char* const kTestNamespaces[] = {"pt::test::", "pt::grading::", "pt::library::", "pt::error_model::",
-                                       "pt::stats::", "testing::"};
+// The namespaces that are not a task file's: the test support's
+// (tests/support/), GoogleTest's, the process boundary's (the worker's own
+// code, autograder/boundary/) and the grader's. The framework (skeleton/)
+// uses pt:: alone.
+const char* const kTestNamespaces[] = {"pt::test::",  "pt::grading::", "pt::library::", "pt::error_model::",
+                                       "pt::stats::", "testing::",     "pt::boundary::", "pt::grade::"};
 
-// Framework functions that do a task's work for the renderer: the budgeted
-// renderer's allocator is P5T3's answer, so a task file may not call it.
-const char* const kTaskAnswers[][2] = {{"pt::allocate_counts(", "P5T3"}, {"pt::pooled_relative_sd(", "P5T3"}};
+// The part a file is of, from its name (part3_direct_lighting.cpp.o,
+// libpt_part3_reference.a), or 0.
+int part_of(const std::string& path) {
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  for (size_t at = name.find("part"); at != std::string::npos; at = name.find("part", at + 1))
+    if (at + 4 < name.size() && std::isdigit(static_cast<unsigned char>(name[at + 4])) &&
+        (at + 5 == name.size() || !std::isdigit(static_cast<unsigned char>(name[at + 5]))))
+      return name[at + 4] - '0';
+  return 0;
+}
+
+// Whether part `part`'s handout lets its tasks call `demangled`, another
+// part's solution function (part_calls.h).
+bool may_call(int part, const std::string& demangled) {
+  for (const auto& c : pt::grade::kSolutionCalls)
+    if (c.part == part && demangled.rfind(c.function, 0) == 0) return true;
+  return false;
+}
 
 // The test-side namespace a demangled name mentions anywhere (its own scope,
 // a template argument, a parameter type), or "".
@@ -157,7 +197,7 @@ bool header_instantiation(const std::string& mangled) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> objects, tests, framework, libraries;
+  std::vector<std::string> objects, tests, framework, libraries, solutions;
   std::vector<std::string>* list = &objects;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -167,6 +207,8 @@ int main(int argc, char** argv) {
       list = &framework;
     else if (a == "--libraries")
       list = &libraries;
+    else if (a == "--solutions")
+      list = &solutions;
     else
       list->push_back(a);
   }
@@ -185,6 +227,10 @@ int main(int argc, char** argv) {
         if (is_global(s.type)) framework_symbols.insert(s.name);
     for (const auto& f : libraries)
       for (const auto& s : defined_symbols(f, true)) library_symbols.insert(s.name);
+    std::map<std::string, int> solution_symbols;  // what another part's solution defines -> that part
+    for (const auto& f : solutions)
+      for (const auto& s : defined_symbols(f, false))
+        if (is_global(s.type) && !is_weak(s.type)) solution_symbols.emplace(s.name, part_of(f));
 
     std::vector<std::string> problems;
     for (const auto& object : objects) {
@@ -192,6 +238,7 @@ int main(int argc, char** argv) {
       for (const auto& section : section_names(object))
         if (starts_with(section, ".preinit_array") || section == ".init")
           refuse("has a " + section + " section: code that runs before the test main");
+      const std::set<std::string> comdat = comdat_signatures(object);
       for (const auto& s : defined_symbols(object, false)) {
         const std::string name = demangle(s.name);
         if (s.type == 'i') {
@@ -205,13 +252,21 @@ int main(int argc, char** argv) {
         if (s.name == "main")
           refuse("defines main()");
         else if (!test_ns.empty())
-          refuse(kind + name + ", in " + test_ns + ", which belongs to the tests, their support or GoogleTest");
+          refuse(kind + name + ", in " + test_ns +
+                 ", which belongs to the tests, their support, GoogleTest, the process boundary or the grader");
         else if (test_symbols.count(s.name) && (strong || !header_instantiation(s.name)))
           refuse(kind + name + ", which the tests or their support define: it could replace theirs");
         else if (strong && framework_symbols.count(s.name))
           refuse("defines " + name + ", which the test framework or the skeleton defines: it would replace theirs");
-        else if ((strong || !starts_with(s.name, "_Z")) && library_symbols.count(s.name))
-          refuse("defines " + name + ", which the C or C++ library defines: it would replace the library's everywhere");
+        // A definition in the program, even a weak one, replaces a shared
+        // library's for every caller (std::string::_M_append, say, which the
+        // boundary's link sends its answers through). The compiler's own
+        // copies of the headers' inline functions are COMDAT groups (std::endl
+        // makes std::ctype<char>::do_widen): those are the headers' code; a
+        // weak definition outside a group is the task file's own.
+        else if (library_symbols.count(s.name) && (strong || !comdat.count(s.name)))
+          refuse((strong ? "defines " : "defines a weak ") + name +
+                 ", which the C or C++ library exports: it would replace the library's everywhere");
       }
       // What the task file uses must come from the framework or the
       // libraries: the tests' own code (the support's BVH builder, its
@@ -220,9 +275,14 @@ int main(int argc, char** argv) {
         if (test_symbols.count(s.name) && !framework_symbols.count(s.name) && !library_symbols.count(s.name))
           refuse("uses " + demangle(s.name) + ", which only the tests, their support or GoogleTest define");
         const std::string name = demangle(s.name);
-        for (const auto& [prefix, task] : kTaskAnswers)
-          if (starts_with(name, prefix))
-            refuse("uses " + name + ", the framework's own answer to " + task + ": write it yourself");
+        for (const auto& answer : pt::grade::kTaskAnswers)
+          if (starts_with(name, answer.function))
+            refuse("uses " + name + ", the framework's own answer to " + answer.task + ": write it yourself");
+        // Another part's solution: only what this part's handout specifies.
+        const int part = part_of(object);
+        if (auto it = solution_symbols.find(s.name); it != solution_symbols.end() && !may_call(part, name))
+          refuse("uses " + name + ", part " + std::to_string(it->second) + "'s solution, which part " +
+                 std::to_string(part) + "'s tasks are not specified to call (autograder/part_calls.h)");
       }
     }
     if (problems.empty()) return 0;

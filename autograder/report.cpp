@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
+#include "report_text.h"
 
 namespace pt::grade {
 namespace {
@@ -53,12 +54,33 @@ struct Tally {
   std::string points() const { return fmt(earned) + " / " + fmt(possible); }
 };
 
-std::vector<std::string> all_notes(const Report& report) {
+}  // namespace
+
+std::vector<std::string> all_notes(const Report& report, const TextBounds& bounds) {
   std::vector<std::string> notes = report.notes;
   for (const auto& p : report.parts)
     for (const auto& n : p.notes) notes.push_back("part " + std::to_string(p.part) + ": " + n);
-  return notes;
+  std::vector<std::string> kept;
+  size_t cost = 0;
+  for (size_t i = 0; i < notes.size(); ++i) {
+    std::string note = capped(notes[i], bounds.note);
+    cost += json_cost(note) + 2;
+    if (cost > bounds.notes) {
+      kept.push_back("[... and " + std::to_string(notes.size() - i) + " more notes, not shown: a report has a bounded size]");
+      break;
+    }
+    kept.push_back(std::move(note));
+  }
+  return kept;
 }
+
+std::string instructor_text(const Report& report, const TextBounds& bounds) {
+  std::string flags;
+  for (const auto& n : report.instructor_notes) flags += n + "\n";
+  return capped(flags, bounds.flags);
+}
+
+namespace {
 
 }  // namespace
 
@@ -91,13 +113,15 @@ std::string folded(const std::string& text, const std::string& indent, size_t wi
   return out;
 }
 
-void write_results_json(const std::string& path, const Report& report) {
+namespace {
+
+json results_document(const Report& report, const TextBounds& bounds) {
   json tests = json::array(), parts = json::object();
   double score = 0;
   for (const auto& p : report.parts) {
     for (const auto& t : p.tests) {
-      std::string output = t.passed() ? "" : t.message;
-      if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + t.output;
+      std::string output = t.passed() ? "" : capped(t.message, bounds.message);
+      if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + capped(t.output, bounds.output);
       score += t.passed() ? t.test.points : 0;
       const std::string uncounted = t.test.uncounted() ? " (extension, not counted)" : "";
       tests.push_back({{"name", t.test.task + " " + t.test.name + uncounted},
@@ -113,17 +137,15 @@ void write_results_json(const std::string& path, const Report& report) {
         {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}, {"seconds", p.seconds}};
   }
   if (!report.instructor_notes.empty()) {
-    std::string flags;
-    for (const auto& n : report.instructor_notes) flags += n + "\n";
     tests.push_back({{"name", "Instructor: source flags"},
                      {"score", 0.0},
                      {"max_score", 0.0},
                      {"status", "passed"},
-                     {"output", flags},
+                     {"output", instructor_text(report, bounds)},
                      {"visibility", "hidden"}});
   }
   std::string text;
-  for (const auto& n : all_notes(report)) text += n + "\n";
+  for (const auto& n : all_notes(report, bounds)) text += n + "\n";
   json doc = {{"score", score},
               {"execution_time", std::round(report.seconds * 10) / 10},
               {"tests", tests},
@@ -136,8 +158,23 @@ void write_results_json(const std::string& path, const Report& report) {
                     {"missing", report.sandbox_missing},
                     {"ids", report.sandbox_ids}}}}}}}};
   if (!text.empty()) doc["output"] = text;
-  // Messages are whatever the tests printed: never let bad UTF-8 stop the report.
-  write_file_atomically(path, doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+  return doc;
+}
+
+}  // namespace
+
+void write_results_json(const std::string& path, const Report& report) {
+  // Each text is capped already; with every test's at its cap, halving the
+  // caps until the file fits keeps the bound for any number of tests.
+  TextBounds bounds;
+  std::string text;
+  for (;;) {
+    // Messages are whatever the tests printed: never let bad UTF-8 stop the report.
+    text = results_document(report, bounds).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+    if (text.size() <= kMaxResultsBytes || bounds.message <= 256) break;
+    bounds = bounds.halved();
+  }
+  write_file_atomically(path, text);
 }
 
 void print_report(const Report& report, bool show_hidden) {
@@ -184,17 +221,18 @@ void print_report(const Report& report, bool show_hidden) {
       std::printf("  %s %s%s (%s%s)\n", t.test.task.c_str(), t.test.name.c_str(), t.test.hidden ? " [hidden]" : "",
                   points_text(t.test.points).c_str(),
                   t.test.uncounted() ? ": an extension task, not counted" : "");
-      std::fputs(folded(t.message, "      ").c_str(), stdout);
+      const TextBounds bounds;
+      std::fputs(folded(capped(t.message, bounds.message), "      ").c_str(), stdout);
       if (!t.output.empty()) {
         std::printf("      last output:\n");
-        std::fputs(first_lines(t.output, 12, "      | ").c_str(), stdout);
+        std::fputs(first_lines(capped(t.output, bounds.output), 12, "      | ").c_str(), stdout);
       }
     }
     if (failed && !p.log.empty()) std::printf("      (part %d output: %s)\n", p.part, p.log.c_str());
   }
   if (!report.instructor_notes.empty()) std::printf("\nFor the instructor (no effect on the score):\n");
   for (const auto& n : report.instructor_notes) std::fputs(first_lines(n, 12, "  ").c_str(), stdout);
-  const auto notes = all_notes(report);
+  const auto notes = all_notes(report, TextBounds{});
   if (!notes.empty()) std::printf("\nNotes:\n");
   for (const auto& n : notes) std::fputs(folded(n, "  ").c_str(), stdout);
   std::fflush(stdout);

@@ -29,10 +29,19 @@ struct Report {
   bool complete = false;  // every part graded (false while grading, or after a budget ran out)
 };
 
+struct TextBounds;
+
+// Every note of the report (the parts' with their part named), each and all
+// together within `bounds` (report_text.h).
+std::vector<std::string> all_notes(const Report& report, const TextBounds& bounds);
+// The instructor's source flags as one text within `bounds`.
+std::string instructor_text(const Report& report, const TextBounds& bounds);
+
 // Writes Gradescope's results.json atomically (temporary file, rename): a
 // reader, or a grader killed half-way, sees one whole report or the previous
 // one. Every test of every part is listed with its points, graded or not.
-// Throws std::runtime_error when the file cannot be written.
+// Every text in it is capped (report_text.h) and the file is at most
+// kMaxResultsBytes, whatever the submission did. Throws std::runtime_error when the file cannot be written.
 void write_results_json(const std::string& path, const Report& report);
 
 // The score table, the failed tests with their whole messages (hidden ones by

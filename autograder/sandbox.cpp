@@ -194,6 +194,7 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   if (plan.user_ns) flags |= CLONE_NEWUSER;
   if (plan.pid_ns) flags |= CLONE_NEWPID;
   if (plan.mount_ns) flags |= CLONE_NEWNS;
+  if (plan.ipc_ns) flags |= CLONE_NEWIPC;
   // Children the caller already had are not the run's: never killed.
   const std::set<pid_t> before = confine::children_of(::getpid());
   const auto start = Clock::now();
@@ -382,14 +383,14 @@ void Sandbox::probe() {
     user_note = "unprivileged user: the grader is not root, so the code under test runs as the grader's own user";
   }
   p.user_ns = !root;
-  p.pid_ns = p.mount_ns = p.tmpfs = p.proc = true;
+  p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = true;
   p.landlock_abi = landlock_abi();
   p.seccomp = seccomp_available();
   std::string ns_note, tmpfs_note, proc_note, landlock_note, seccomp_note;
   if (p.landlock_abi == 0) landlock_note = "Landlock: this kernel does not offer it";
   if (!p.seccomp) seccomp_note = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
   if (!wanted("namespaces")) {
-    p.user_ns = p.pid_ns = p.mount_ns = p.tmpfs = p.proc = false;
+    p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false;
     ns_note = "namespaces" + turned_off;
   }
   if (!wanted("landlock")) {
@@ -417,7 +418,7 @@ void Sandbox::probe() {
     bool retry = false;
     auto drop_namespaces = [&](const std::string& why) {
       ns_note = "namespaces: " + why;
-      p.user_ns = p.pid_ns = p.mount_ns = p.tmpfs = p.proc = false;
+      p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false;
       retry = true;
     };
     if (r.clone_errno != 0) {
@@ -458,6 +459,8 @@ void Sandbox::probe() {
   else
     active_.push_back("child subreaper: whatever a run leaves behind is killed at its end");
   if (p.user_ns) active_.push_back("user namespace: no capability inside or out");
+  if (p.ipc_ns)
+    active_.push_back("IPC namespace: System V objects and POSIX message queues die with the run");
   if (p.tmpfs) active_.push_back("private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
   if (!p.tmpfs) active_.push_back("private working directory");
   if (p.proc) active_.push_back("private /proc: other processes are invisible");
@@ -473,7 +476,9 @@ void Sandbox::probe() {
                       ": reads only the system and the given paths, writes only its working directory, executes only "
                       "itself" +
                       (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
-  if (p.seccomp) active_.push_back("seccomp: no fork, exec, ptrace or sockets; signals only to itself");
+  if (p.seccomp)
+    active_.push_back("seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; "
+                      "signals only to itself");
   active_.push_back("output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
                     std::to_string(l.output_tail >> 10) + " KiB kept");
   for (const std::string* note : {&ns_note, &tmpfs_note, &proc_note, &user_note, &landlock_note, &seccomp_note})
@@ -491,6 +496,7 @@ std::vector<std::string> Sandbox::layer_ids() const {
   if (!options_.confine) return {};
   std::vector<std::string> ids{p.pid_ns ? "pid-ns" : "subreaper", "session", "rlimits", "workdir"};
   if (p.user_ns) ids.push_back("user-ns");
+  if (p.ipc_ns) ids.push_back("ipc-ns");
   if (p.tmpfs) ids.push_back("tmpfs");
   if (p.proc) ids.push_back("proc");
   if (p.switch_user) ids.push_back("user");

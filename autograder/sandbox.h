@@ -4,13 +4,15 @@
 //
 //   namespaces   PID (every descendant dies with the run), mount (a private
 //                tmpfs working directory, a /proc that shows only the run),
+//                IPC (System V objects and message queues die with the run),
 //                and a user namespace when the grader is not root
 //   user         an unprivileged account (default nobody) when the grader is root
 //   session      its own, with no terminal
 //   limits       address space, CPU time, file size, open files, processes
 //   landlock     reads only the system and the given paths, writes only its
 //                working directory, executes only itself, no TCP, no signals out
-//   seccomp      no fork, exec, ptrace or sockets; signals only to itself
+//   seccomp      an allowlist of system calls: no fork, exec, ptrace,
+//                sockets or IPC objects; signals only to itself
 //   output       through a pipe, only the head and tail of it kept
 //
 // Each layer is probed once; what this machine does not offer is left out and

@@ -1,9 +1,15 @@
 #pragma once
-// A seccomp filter (libseccomp) for the code under test: threads yes, new
-// processes no. It kills the process (SIGSYS, which the report names) on
-// fork, vfork, clone without CLONE_THREAD, exec of anything but the test
-// binary itself, ptrace and process_vm_*; it refuses signals to any process
-// but itself, sockets, namespaces, mounts and io_uring.
+// A seccomp filter (libseccomp) for the code under test: an allowlist. What a
+// test binary, a worker or a renderer needs (memory, threads, files, time,
+// signals to itself) is allowed; the list, grouped with the reason for each
+// group, is autograder/README.md's threat model, and seccomp_filter.cpp is
+// the same list in code. Anything else returns ENOSYS, as on a kernel that
+// lacks it. Process creation and escapes are named and kill the process
+// (SIGSYS, which the report names): fork, vfork, clone without CLONE_THREAD,
+// exec of anything but the test binary itself, ptrace, process_vm_*. What
+// outlives a process or reaches past it (System V shared memory, message
+// queues and semaphores, POSIX message queues, sockets, namespaces, mounts,
+// io_uring, signals to another process) is refused with EPERM.
 #include <sys/types.h>
 
 #include <string>

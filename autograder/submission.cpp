@@ -20,6 +20,7 @@
 #include "redact.h"
 #include "report.h"
 #include "report_renders.h"
+#include "report_text.h"
 #include "source_scan.h"
 #include "submission_files.h"
 #include "work_area.h"
@@ -56,10 +57,12 @@ std::string seconds_text(double s) {
   return buf;
 }
 
+// A submission decides how many findings there are (a million refused lines):
+// the first ones are listed, each capped, then how many more there are.
 std::string joined_findings(const std::vector<SourceFinding>& found, const std::string& file) {
-  std::string text;
-  for (const auto& f : found) text += file + ":" + std::to_string(f.line) + ": " + f.what + "\n";
-  return text;
+  std::vector<std::string> lines;
+  for (const auto& f : found) lines.push_back(file + ":" + std::to_string(f.line) + ": " + f.what);
+  return capped_list(lines, 100, 512);
 }
 
 }  // namespace
@@ -175,7 +178,9 @@ int grade_submission(const SubmissionOptions& opt) {
   if (!sub.problems.empty()) {
     std::string why = "submission rejected before building:";
     for (const auto& p : sub.problems) why += "\n  " + p;
-    for (auto& p : report.parts) set_part(p.part, why);
+    // Said once, in the notes; each part's tests say its first lines.
+    const std::string each = summary(why, "the whole list is in the report's notes");
+    for (auto& p : report.parts) set_part(p.part, each);
     report.notes.push_back(why);
     report.complete = true;
     save();
@@ -265,7 +270,7 @@ int build_and_grade(Graded& graded) {
                                   "-DPT_PARTS_SUBMITTED=" + parts_list},
                                  120, &out);
     if (rc != 0) {
-      std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", out.c_str());
+      std::fprintf(stderr, "pt-grade: the grading kit's build could not be configured:\n%s\n", capped(out, 4000).c_str());
       for (const TaskFile* f : buildable) set_part(f->part, "not built: the grading kit could not be configured (an instructor must look)");
       report.notes.push_back("cmake configure failed:\n" + out.substr(0, 4000));
       buildable.clear();
@@ -303,6 +308,11 @@ int build_and_grade(Graded& graded) {
                                   : f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n";
       if (const std::string bound = disk_bound_note(out, area, build_stopped); !bound.empty()) why += bound + ".\n";
       why += compiler_errors(out, tree.string());
+      // The compiler quotes the lines it complains about, and `#line` can make
+      // it quote any file it reads: redacted like a test's message.
+      if (const size_t redacted = redactor.redact(why); redacted > 0)
+        report.notes.push_back("part " + std::to_string(f->part) + ": " + std::to_string(redacted) +
+                               " line(s) of the solution were removed from the build's messages (read its task file)");
       set_part(f->part, why);
       continue;
     }
@@ -314,7 +324,7 @@ int build_and_grade(Graded& graded) {
     if (!unexpected.empty()) {
       std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
                         "the standard library: rejected.\n";
-      for (const auto& u : unexpected) why += "  " + u + "\n";
+      why += capped_list(unexpected, 50, 512);
       set_part(f->part, why);
       continue;
     }

@@ -22,6 +22,8 @@
 // hold appears in it; and no process of the run is left. Exit status 0
 // honest, 1 not, 77 skipped (a sandbox layer the case needs is missing here),
 // 2 could not check.
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -231,6 +233,69 @@ FolderState folder_state(const fs::path& dir) {
   return f;
 }
 
+// The IPC objects this machine holds in the grader's IPC namespace: System V
+// shared memory, queues and semaphore sets by kind, key and id, and POSIX
+// message queues by name. Killing processes frees none of them, so a run's
+// objects must never be here (the sandbox gives each run an IPC namespace
+// and seccomp refuses the calls). POSIX queues are listed from /dev/mqueue,
+// or, where it is not mounted, from an mqueue filesystem that a child mounts
+// in a mount namespace of its own (as root; otherwise they are not compared,
+// and *note says so).
+std::set<std::string> ipc_objects(std::string* note) {
+  std::set<std::string> found;
+  for (const char* kind : {"shm", "msg", "sem"}) {
+    std::ifstream list(std::string("/proc/sysvipc/") + kind);
+    std::string line;
+    std::getline(list, line);  // the header
+    while (std::getline(list, line)) {
+      std::istringstream fields(line);
+      std::string key, id;
+      if (fields >> key >> id) found.insert(std::string(kind) + " key " + key + " id " + id);
+    }
+  }
+  auto list_queues = [&found](const std::string& dir) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) found.insert("mq " + e.path().filename().string());
+  };
+  if (fs::exists("/dev/mqueue/.")) {
+    list_queues("/dev/mqueue");
+    return found;
+  }
+  char dir[] = "/tmp/pt-hostile-mqueue-XXXXXX";
+  int fds[2];
+  if (!::mkdtemp(dir) || ::pipe(fds) != 0) {
+    *note = "POSIX message queues not compared: no folder or pipe to list them";
+    return found;
+  }
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::close(fds[0]);
+    if (::unshare(CLONE_NEWNS) != 0 || ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+        ::mount("mqueue", dir, "mqueue", 0, nullptr) != 0)
+      ::_exit(1);
+    std::string names;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) names += e.path().filename().string() + "\n";
+    [[maybe_unused]] auto n = ::write(fds[1], names.data(), names.size());
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string names;
+  char buf[4096];
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) names.append(buf, static_cast<size_t>(n));
+  ::close(fds[0]);
+  int status = 1;
+  if (child > 0) ::waitpid(child, &status, 0);
+  ::rmdir(dir);
+  if (child < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    *note = "POSIX message queues not compared: /dev/mqueue is not mounted and this checker cannot mount one";
+    return found;
+  }
+  std::istringstream lines(names);
+  for (std::string name; std::getline(lines, name);) found.insert("mq " + name);
+  return found;
+}
+
 struct Checker {
   std::vector<std::string> failures;
   void expect(bool ok, const std::string& what) {
@@ -343,9 +408,18 @@ int main(int argc, char** argv) {
   ::unlink(results_path.c_str());
   const fs::path results_dir = fs::absolute(results_path).parent_path();
   const FolderState before = folder_state(results_dir);
+  std::string ipc_note;
+  const std::set<std::string> ipc_before = ipc_objects(&ipc_note);
   const double kill_after = expect.value("kill_grader_after", 0.0);
   DiskPeak disk(results_dir.string());
-  const int status = run_command(command, nullptr, kill_after);
+  // The grader's standard output is kept (its size, and no hidden name in it)
+  // and passed on, its head, to this program's; a grader killed from outside
+  // prints to this program's directly.
+  std::string printed;
+  pt::grade::CommandOptions keep_printed;
+  keep_printed.max_output = 64u << 20;
+  const int status = kill_after > 0 ? run_command(command, nullptr, kill_after) : run_command(command, &printed, keep_printed);
+  if (!printed.empty()) std::printf("%s\n", printed.substr(0, 256u << 10).c_str());
   const uint64_t disk_peak = disk.finish();
   const std::string written = read_file(results_path);
   std::this_thread::sleep_for(std::chrono::duration<double>(expect.value("settle_seconds", 0.0)));
@@ -369,6 +443,10 @@ int main(int argc, char** argv) {
   end_descendants(left_pids);
   const size_t left = left_pids.size();
   c.expect(left == 0, std::to_string(left) + " process(es) of the run outlived the grader");
+  // Nothing left in IPC: no System V object or POSIX queue that was not there before.
+  for (const std::string& object : ipc_objects(&ipc_note))
+    c.expect(ipc_before.count(object) > 0, "left in IPC after the grader: " + object);
+  if (!ipc_note.empty()) std::printf("%s\n", ipc_note.c_str());
   if (!work.empty() && kill_after == 0) {
     std::error_code ec;
     c.expect(fs::is_empty(work, ec) || !fs::exists(work), "the grader left files in " + work);
@@ -495,9 +573,35 @@ int main(int argc, char** argv) {
     c.expect(std::regex_search(flags, std::regex(expect["flag"].get<std::string>())),
              "no source flag matching /" + expect["flag"].get<std::string>() + "/ for the instructor: " + flags.substr(0, 300));
   }
+  std::printf("sizes: results.json %zu bytes, standard output %zu bytes\n", settled.size(), printed.size());
   if (expect.contains("max_results_bytes"))
     c.expect(settled.size() <= expect["max_results_bytes"].get<size_t>(),
              "results.json is " + std::to_string(settled.size()) + " bytes");
+  if (expect.contains("max_stdout_bytes"))
+    c.expect(printed.size() <= expect["max_stdout_bytes"].get<size_t>(),
+             "the grader printed " + std::to_string(printed.size()) + " bytes");
+  const std::string html_path = argument_of(command, "--html");
+  const std::string page = html_path.empty() ? "" : read_file(html_path);
+  if (!html_path.empty()) std::printf("sizes: report.html %zu bytes\n", page.size());
+  if (expect.contains("max_report_bytes") && !html_path.empty())  // the page is written under `submission` alone
+    c.expect(!page.empty() && page.size() <= expect["max_report_bytes"].get<size_t>(),
+             "report.html is " + std::to_string(page.size()) + " bytes");
+  // No hidden test's name where a student or the page could read it: in the
+  // visible tests' messages and the notes of results.json, on standard
+  // output, in report.html (where hidden tests appear only when they fail).
+  if (expect.value("no_hidden_names", false)) {
+    std::string visible = results.value("output", "");
+    for (const auto& t : results.value("tests", json::array()))
+      if (t.value("visibility", "") == "visible") visible += "\n" + t.value("output", "");
+    for (const auto& [n, tests] : manifest["parts"].items())
+      for (const auto& m : tests) {
+        if (m.value("visibility", "") != "hidden") continue;
+        const std::string name = m.at("test");
+        c.expect(visible.find(name) == std::string::npos, "results.json shows the hidden test " + name + " to students");
+        c.expect(printed.find(name) == std::string::npos, "the grader printed the hidden test " + name);
+        c.expect(page.find(name) == std::string::npos, "report.html names the hidden test " + name);
+      }
+  }
 
   // No line of the solution or of a hidden test, unless the submission itself
   // holds it (a student may see their own code in a compiler's message).

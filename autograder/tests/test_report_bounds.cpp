@@ -1,0 +1,103 @@
+// Reports have a size whatever a submission does (report_text.h): each text is
+// cut at its bound with a note, a long part-level reason is said once, and
+// results.json stays within kMaxResultsBytes for any number of huge messages.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "report.h"
+#include "report_text.h"
+
+namespace pt::grade {
+namespace {
+
+// What JSON makes of each kind of character, against nlohmann's own dump.
+TEST(ReportBounds, JsonCostIsWhatTheDumpTakes) {
+  const std::string text = std::string("plain \"quoted\" back\\slash\n\t") + '\x01' + '\x1b' + "\xff" + "\xc3\xa9" +
+                           "\xe2\x80\xae" + std::string(1, '\xc3');
+  const std::string dumped =
+      nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  EXPECT_EQ(json_cost(text), dumped.size() - 2);
+}
+
+TEST(ReportBounds, ACappedTextFitsAndSaysWhatWasCut) {
+  std::string text;
+  for (int i = 0; i < 100000; ++i) text += "\"\\\x01\xff";
+  const std::string cut = capped(text, 4096);
+  EXPECT_LE(json_cost(cut), 4096u);
+  EXPECT_NE(cut.find("pt-grade cut"), std::string::npos);
+  EXPECT_NE(cut.find(std::to_string(text.size()) + " bytes"), std::string::npos);
+  EXPECT_EQ(capped("short", 4096), "short");
+  // Never half a character: a cut inside a 3-byte character keeps none of it.
+  const std::string wide = capped(std::string(2000, '\xe2') + "", 300);
+  EXPECT_LE(json_cost(wide), 300u);
+}
+
+TEST(ReportBounds, ASummaryIsShortAndItsOwnSummary) {
+  std::string reason = "part1.cpp rejected before building:\n";
+  for (int i = 0; i < 5000; ++i) reason += "part1.cpp:" + std::to_string(i) + ": #embed refused\n";
+  const std::string once = summary(reason, "the rest is in the notes");
+  EXPECT_LE(json_cost(once), kSummaryBytes);
+  EXPECT_NE(once.find("rejected before building"), std::string::npos);
+  EXPECT_NE(once.find("the rest is in the notes"), std::string::npos);
+  EXPECT_EQ(summary(once, "the rest is in the notes"), once);
+  EXPECT_EQ(summary("one line", "x"), "one line");
+}
+
+TEST(ReportBounds, ALongListKeepsItsHeadAndCountsTheRest) {
+  std::vector<std::string> items(10000, std::string(2000, 'f'));
+  const std::string text = capped_list(items, 100, 512);
+  EXPECT_LE(text.size(), 100u * 600u);
+  EXPECT_NE(text.find("and 9900 more"), std::string::npos);
+}
+
+// A part-level reason goes to the part's notes once, not into every test.
+TEST(ReportBounds, APartLevelReasonIsNotCopiedIntoEveryTest) {
+  PartManifest tests;
+  for (int i = 0; i < 40; ++i) tests.push_back({"Suite.Test" + std::to_string(i), "P1T1", 0.5, false, false});
+  std::string why = "part1.cpp rejected before building:\n";
+  for (int i = 0; i < 20000; ++i) why += "part1.cpp:" + std::to_string(i) + ": refused\n";
+  const PartResult r = pending_part(1, tests, why);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0], why);
+  for (const auto& t : r.tests) EXPECT_LE(t.message.size(), kSummaryBytes);
+}
+
+// 500 tests, each with 64 KiB of the costliest characters (384 KiB of JSON) in
+// its message and output, notes and flags: 380 MB uncapped; results.json fits.
+TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
+  const std::string costly(64 << 10, '\x01');
+  Report report;
+  PartResult part;
+  part.part = 1;
+  for (int i = 0; i < 500; ++i) {
+    TestResult t;
+    t.test = {"Suite.Test" + std::to_string(i), "P1T1", 0.5, i % 2 == 0, false};
+    t.status = TestResult::Status::Failed;
+    t.message = costly;
+    t.output = costly;
+    part.tests.push_back(t);
+    part.notes.push_back(costly);
+  }
+  report.parts.push_back(part);
+  report.instructor_notes.push_back(costly);
+  report.notes.push_back(costly);
+  const std::string path = ::testing::TempDir() + "pt_report_bounds.json";
+  write_results_json(path, report);
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  EXPECT_LE(s.str().size(), kMaxResultsBytes);
+  const auto doc = nlohmann::json::parse(s.str());
+  EXPECT_EQ(doc["tests"].size(), 501u);  // every test listed, and the flags
+  EXPECT_NE(doc["tests"][0]["output"].get<std::string>().find("pt-grade cut"), std::string::npos);
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace pt::grade
