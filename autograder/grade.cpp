@@ -1,4 +1,4 @@
-// pt-grade: scores the graded GoogleTest binaries (DESIGN.md section 6),
+// pt-grade: scores the graded GoogleTest binaries (docs/architecture.md, "How tests grade"),
 // checks the stubs and the mutant gallery with the same machinery, and writes
 // the manifest those rely on. How it keeps a hostile submission from writing
 // its own grade: README.md beside this file.

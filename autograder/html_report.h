@@ -1,5 +1,5 @@
 #pragma once
-// The report a person reads (issue 8 section 4): one self-contained HTML page
+// The report a person reads: one self-contained HTML page
 // per submission (no scripts, no outside files: images are inlined), with
 //  * the score per part and per task;
 //  * each failing test with its message, what the handout's grading table

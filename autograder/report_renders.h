@@ -1,5 +1,5 @@
 #pragma once
-// The report's renders (issue 8 section 4): the scene library rendered with
+// The report's renders: the scene library rendered with
 // the parts of a submission that earned points and the solution of the rest,
 // each judged against its stored reference image.
 //

@@ -1,6 +1,6 @@
 #pragma once
 // What `pt-grade submission` reads in a task file before it builds anything
-// (issue 8 section 2; autograder/README.md has the threat model):
+// (autograder/README.md has the threat model):
 //
 //  * Rejections: a file that is not UTF-8, starts with a byte-order mark,
 //    holds a NUL or a CR not followed by LF (the compiler would read its

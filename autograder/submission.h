@@ -1,6 +1,6 @@
 #pragma once
 // `pt-grade submission PATH`: grades a student's submission end to end
-// (DESIGN section 11, issue 8 section 2), in this order:
+// (docs/architecture.md, "The course loop"), in this order:
 //
 //  1. read the grading kit's manifest (the trusted list of graded tests);
 //     results.json is written at once, every part 0 of its maximum;

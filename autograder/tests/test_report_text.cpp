@@ -1,5 +1,5 @@
 // The score table a student reads in a terminal: a long failure message is
-// folded, never cut (issue 20: the camera test's diagnosis was its 7th line),
+// folded, never cut (the camera test's diagnosis was once its 7th line),
 // and hidden points a build could not run are shown as not run.
 #include <gtest/gtest.h>
 
