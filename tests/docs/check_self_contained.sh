@@ -24,7 +24,14 @@ while IFS= read -r f; do
   [ -f "$f" ] || continue
   [[ "$f" =~ $allowed ]] && [ $# -eq 0 ] && continue
   case "$f" in *.png|*.exr|*.jpg|*.obj|*.zip|*.gz|*.ico) continue ;; esac
-  hits=$(grep -nIE -- "$pattern" "$f" 2>/dev/null) || continue
+  grep -qI . "$f" 2>/dev/null || continue  # binary
+  # A citation broken across two lines ("issue" at a line's end, its number
+  # at the next one's start, after a comment marker) counts too.
+  hits=$( { grep -nIE -- "$pattern" "$f"
+            awk '/[Ii]ssues?[ \t]*$/ {held = FNR ": " $0; next}
+                 held != "" && /^[ \t]*(\/\/|#|\*)?[ \t]*#?[0-9]+/ {print held " " $0}
+                 {held = ""}' "$f"; } 2>/dev/null)
+  [ -n "$hits" ] || continue
   while IFS= read -r h; do
     echo "$f:${h%%:*}: cites what the repository does not hold: ${h#*:}"
     found=$((found + 1))
