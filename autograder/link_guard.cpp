@@ -63,11 +63,16 @@ std::vector<Symbol> symbols(const std::string& file, bool dynamic, bool defined)
 }
 std::vector<Symbol> defined_symbols(const std::string& file, bool dynamic) { return symbols(file, dynamic, true); }
 
-std::vector<std::string> section_names(const std::string& file) {
+// readelf's report on `file` (`what`: -S the sections, -g the groups).
+std::string readelf(const std::string& what, const std::string& file) {
   std::string out;
-  if (run_command({"readelf", "-S", "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
+  if (run_command({"readelf", what, "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
+  return out;
+}
+
+std::vector<std::string> section_names(const std::string& file) {
   std::vector<std::string> names;
-  std::istringstream in(out);
+  std::istringstream in(readelf("-S", file));
   for (std::string line; std::getline(in, line);) {
     const auto close = line.find(']');
     if (line.find('[') == std::string::npos || close == std::string::npos) continue;
@@ -81,10 +86,8 @@ std::vector<std::string> section_names(const std::string& file) {
 // The signatures of the object's COMDAT groups: the inline functions and
 // template instantiations the compiler made, each kept once in the program.
 std::set<std::string> comdat_signatures(const std::string& file) {
-  std::string out;
-  if (run_command({"readelf", "-g", "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
   std::set<std::string> names;
-  std::istringstream in(out);
+  std::istringstream in(readelf("-g", file));
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("COMDAT group section", 0) != 0) continue;
     // COMDAT group section [    1] `.group' [SIGNATURE] contains 1 sections:

@@ -75,17 +75,10 @@ class RepeatedCall {
       try {
         read_run(ask_worker(call_, request(given_, 1)), 1, again, state);
       } catch (...) {
-        args_.clear();
-        answers_.clear();
-        states_.clear();
+        drop_run();
         throw;
       }
-      if (!same_answer(again[0], answers_[at_ - 1]) || !same(state[0], states_[at_ - 1])) {
-        args_.clear();
-        answers_.clear();
-        states_.clear();
-        at_ = 0;
-      }
+      if (!same_answer(again[0], answers_[at_ - 1]) || !same(state[0], states_[at_ - 1])) drop_run();
       rng = state[0];
       expected_ = rng;
       return again[0];
@@ -106,10 +99,7 @@ class RepeatedCall {
         }
         maybe_replay(ask_worker);
       } catch (...) {
-        // No run: the next call starts a new one.
-        args_.clear();
-        answers_.clear();
-        states_.clear();
+        drop_run();
         throw;
       }
     }
@@ -120,6 +110,14 @@ class RepeatedCall {
   }
 
  private:
+  // No run: the next call starts a new one.
+  void drop_run() {
+    args_.clear();
+    answers_.clear();
+    states_.clear();
+    at_ = 0;
+  }
+
   static bool same(const Rng& a, const Rng& b) { return std::memcmp(&a, &b, sizeof(Rng)) == 0; }
 
   Writer request(const Rng& rng, uint32_t count) const {

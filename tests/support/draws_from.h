@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/rng.h"
+#include "support/generator_contract.h"
 
 namespace pt::test {
 
@@ -23,8 +24,8 @@ namespace pt::test {
 // `calls` must make a generator of the task's own visible: one call where the
 // answer is continuous, enough where it is one of a few values (a roulette
 // coin of probability 1/2: 64 calls, all alike by chance with probability
-// 2^-64). A correct task fails only if the 32-bit number after a call equals
-// the one before it: probability 2^-32 per call.
+// 2^-64). The generators' states are compared exactly (generator_contract.h),
+// so a correct task never fails.
 template <class Call>
 ::testing::AssertionResult draws_only_from(const Call& call, uint64_t seed, int calls, const std::string& what) {
   Rng a(seed), b(seed);
@@ -37,16 +38,16 @@ template <class Call>
              << what << ": call " << k + 1 << " gave two different answers from generators in the same state: its "
              << "random numbers must come only from the rng passed in (no generator of its own, no static or global "
                 "state, no std::rand)";
-    Rng after_a = a, after_b = b, unmoved = before;
-    const uint32_t next_a = uint32_t(after_a.uniform() * 0x1p32);
-    if (next_a != uint32_t(after_b.uniform() * 0x1p32))
+    if (!same_bits(a, b))
       return ::testing::AssertionFailure() << what << ": call " << k + 1
                                            << " left two generators that started in the same state in different states";
-    if (next_a == uint32_t(unmoved.uniform() * 0x1p32))
+    const auto drawn = draws_between(before, a);
+    if (drawn && *drawn == 0)
       return ::testing::AssertionFailure()
              << what << ": call " << k + 1
              << " did not move the rng passed in: it draws, so it must draw from that rng itself (pass it on by "
                 "reference, not a copy, or the next estimate draws the same numbers again)";
+    if (!drawn) return ::testing::AssertionFailure() << generator_moved_back(what);
   }
   return ::testing::AssertionSuccess();
 }
