@@ -71,6 +71,16 @@ void hide_folders(std::string& text, const std::vector<std::string>& folders) {
   }
 }
 
+// The verifier's message names the folder it wrote its images in
+// (tests/support/image_test_files.cpp): a path of the grader's, gone by the
+// time anyone reads the report.
+void point_at_report(std::string& message, const std::string& folder, const std::string& test, bool taken) {
+  const std::string written = folder + "/" + test + "/";
+  const std::string instead = taken ? "the grader's HTML report, beside this message"
+                                    : "a folder the grader did not keep (the part's notes say why)";
+  for (size_t at; (at = message.find(written)) != std::string::npos;) message.replace(at, written.size(), instead);
+}
+
 // Follows one run's records and decides its deadline: the per-test limit,
 // counted from the last record (so start-up and the gaps between tests are
 // bounded too), or the part's budget, whichever comes first.
@@ -294,7 +304,7 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
 
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
                         Sandbox& sandbox, const std::string& log_path, const Redactor& redactor,
-                        const std::string& worker) {
+                        const std::string& worker, const ImageFolders* images) {
   PartResult res = pending_part(part, tests, "no verdict");
   res.binary = binary;
   res.log = log_path;
@@ -313,6 +323,8 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
   std::set<std::string> hung_tasks;
   int threads_at_main = 0;
   uint64_t output_bytes = 0;
+  size_t tests_with_images = 0;
+  std::string image_folder_error;
   auto unresolved = [&] {
     std::vector<TestResult*> left;
     for (auto& t : res.tests)
@@ -348,6 +360,18 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     std::snprintf(timeout_flag, sizeof timeout_flag, "--pt_test_timeout=%g", limits.test_seconds);
     RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no", timeout_flag}, make_key(), ""};
     if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
+    // Removed at the end of this run's turn, however it ends.
+    struct ImageFolder {
+      const ImageFolders* folders;
+      std::string path;
+      ~ImageFolder() {
+        if (!path.empty()) folders->discard(path);
+      }
+    } image_folder{images, images ? images->fresh(&image_folder_error) : ""};
+    if (!image_folder.path.empty()) {
+      request.output_dir = image_folder.path;
+      request.args.push_back(kImageDirFlag + image_folder.path);
+    }
     RunWatch watch(request.key, limits, part_end, submission_first);
     RunOutcome worker_run;
     const RunOutcome run =
@@ -387,6 +411,17 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       t.message = v.message;
       if (t.status == TestResult::Status::Skipped) t.message = "skipped (a skipped test earns no points)";
       if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
+      // Every process of the run is dead: nothing changes the folder now.
+      if (t.status == TestResult::Status::Failed && !image_folder.path.empty()) {
+        std::string refused;
+        if (tests_with_images < kMaxImageTestsPerPart)
+          t.images = take_test_images(image_folder.path, t.test.name, &refused);
+        tests_with_images += !t.images.empty() || !refused.empty();
+        if (!refused.empty())
+          res.notes.push_back("images of the failing " + (t.test.hidden ? std::string("hidden test") : t.test.name) +
+                              " refused:\n" + capped(refused, 2048));
+        point_at_report(t.message, image_folder.path, t.test.name, !t.images.empty());
+      }
       t.seconds = v.seconds;
       hidden_ran = hidden_ran || t.test.hidden;
       ++resolved;
@@ -479,6 +514,8 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     res.notes.push_back(std::to_string(unknown) +
                         " verdict(s) for tests the manifest does not list were ignored (an out-of-date manifest? "
                         "build the target graded_manifest)");
+  if (!image_folder_error.empty())
+    res.notes.push_back("no folder for the image tests' images: " + image_folder_error);
   if (output_bytes > (1u << 20))
     res.notes.push_back("the binary printed " + std::to_string(output_bytes >> 20) +
                         " MiB; the log keeps only the head and the tail of each run");

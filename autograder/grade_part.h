@@ -9,6 +9,7 @@
 // budget, and the tests it does not reach score nothing, with the reason. Only the manifest says which tests exist
 // and what they are worth: a test without a verdict fails, and a binary that
 // reports nothing scores 0 of the part's full maximum.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "manifest.h"
 #include "redact.h"
 #include "sandbox.h"
+#include "test_images.h"
 
 namespace pt::grade {
 
@@ -32,6 +34,7 @@ struct TestResult {
   Status status = Status::NotRun;
   std::string message;  // GoogleTest's failure text, or why there is no verdict
   std::string output;   // the last lines it printed, when it took the process down
+  std::vector<TestImage> images;  // a failing image test's (test_images.h), checked
   double seconds = 0;
 
   bool passed() const { return status == Status::Passed; }
@@ -52,6 +55,14 @@ struct PartResult {
   double possible() const;
 };
 
+// Where each run of a test binary may leave a failing image test's images
+// (test_images.h): a fresh folder per run, made where the code under test
+// could have planted nothing, and its removal once they are taken.
+struct ImageFolders {
+  std::function<std::string(std::string* error)> fresh;
+  std::function<void(const std::string&)> discard;
+};
+
 // A part before it is graded: every test 0 of its points, with `why`.
 PartResult pending_part(int part, const PartManifest& tests, const std::string& why);
 
@@ -64,8 +75,12 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
 // each of its runs has the worker beside it, in a sandbox run of its own,
 // answering the proxies over a pipe each way. The verdicts are the
 // verifier's; a worker that dies takes only the test it was answering.
+//
+// With `images`, each run may write a folder of its own, named to it with
+// --pt_image_dir; the images of the tests that failed are taken into their
+// results (test_images.h) and the folder removed.
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
                         Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor(),
-                        const std::string& worker = "");
+                        const std::string& worker = "", const ImageFolders* images = nullptr);
 
 }  // namespace pt::grade

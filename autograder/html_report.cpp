@@ -48,7 +48,7 @@ th{background:#f4f4f4} .num{text-align:right;font-variant-numeric:tabular-nums}
 .fail h3{font-size:1em;margin:.2em 0} .tag{font-size:.8em;padding:.05em .4em;border-radius:3px;background:#eee;margin-left:.4em}
 .hidden-tag{background:#e7e0f6} pre{white-space:pre-wrap;background:#f6f6f6;padding:.6em;font-size:.85em;max-height:22em;overflow:auto}
 .renders{display:grid;grid-template-columns:repeat(3,1fr);gap:.6em;margin:.5em 0 1.5em}
-.renders figure{margin:0} .renders img{width:100%;image-rendering:pixelated;border:1px solid #ccc}
+.test-images{grid-template-columns:repeat(4,1fr)} .renders figure{margin:0} .renders img{width:100%;image-rendering:pixelated;border:1px solid #ccc}
 figcaption{font-size:.85em;color:#555} .flag{color:#b00;font-weight:600} .ok{color:#070}
 .muted{color:#666;font-size:.9em}
 )";
@@ -78,6 +78,26 @@ std::string image(const std::string& path, const std::string& alt, size_t* image
   return "<img alt=\"" + esc(alt) + "\" src=\"data:image/png;base64," + b64 + "\">";
 }
 
+// A failing image test's images in a row, each captioned, while the page's
+// bound on them lasts.
+std::string test_images(const TestResult& t, size_t* shown, size_t* image_bytes) {
+  if (t.images.empty()) return "";
+  size_t bytes = 0;
+  for (const auto& i : t.images) bytes += i.png.size();
+  if (*shown + bytes > kMaxTestImageBytesOnPage)
+    return "<div class=muted>(its images are left out: the page already shows " + std::to_string(*shown) +
+           " bytes of test images, its bound)</div>";
+  *shown += bytes;
+  std::string out = "<div class=\"renders test-images\">";
+  for (const auto& i : t.images) {
+    const std::string b64 = base64(i.png);
+    *image_bytes += b64.size();
+    out += "<figure><img alt=\"" + esc(i.name) + "\" src=\"data:image/png;base64," + b64 + "\"><figcaption>" +
+           esc(i.caption) + "</figcaption></figure>";
+  }
+  return out + "</div>";
+}
+
 }  // namespace
 
 std::string base64_file(const std::string& path) {
@@ -85,7 +105,10 @@ std::string base64_file(const std::string& path) {
   if (!in) return "";
   std::ostringstream s;
   s << in.rdbuf();
-  const std::string bytes = s.str();
+  return base64(s.str());
+}
+
+std::string base64(const std::string& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
@@ -151,6 +174,7 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
   // Failures.
   h << "<h2>Failed tests</h2>\n";
   bool any_failure = false;
+  size_t test_image_bytes = 0;
   for (const auto& p : r.parts) {
     // A part that was not submitted, not built or rejected fails every test
     // with one reason: say it once.
@@ -179,6 +203,7 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
       if (!t.output.empty())
         h << "<div class=muted>Last output before it stopped:</div><pre>" << esc(capped(t.output, bounds.output))
           << "</pre>";
+      h << test_images(t, &test_image_bytes, image_bytes);
       h << "</div>\n";
     }
   }

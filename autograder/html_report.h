@@ -3,7 +3,8 @@
 // per submission (no scripts, no outside files: images are inlined), with
 //  * the score per part and per task;
 //  * each failing test with its message, what the handout's grading table
-//    says it checks and the handout section of its task;
+//    says it checks and the handout section of its task; a failing image
+//    test with its render, reference, difference and p-value images;
 //  * the submission's renders of the library scenes beside the stored
 //    reference images, a false-colour difference image and relMSE, with an
 //    image whose error is far beyond what its sample count explains marked,
@@ -48,10 +49,16 @@ struct HtmlReport {
 // they fit.
 inline constexpr size_t kMaxHtmlTextBytes = 2u << 20;
 
+// A failing image test's images (test_images.h) are shown beside its
+// message, until they take this many bytes of PNG on the page together; the
+// tests after that say their images were left out.
+inline constexpr size_t kMaxTestImageBytesOnPage = 1u << 20;
+
 // Writes the page atomically; throws std::runtime_error naming the file.
 void write_html_report(const std::string& path, const HtmlReport& page);
 
-// Base64 of a file's bytes ("" when it cannot be read): for data: URIs.
+// Base64 of bytes, and of a file's bytes ("" when it cannot be read): for data: URIs.
+std::string base64(const std::string& bytes);
 std::string base64_file(const std::string& path);
 
 }  // namespace pt::grade

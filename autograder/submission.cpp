@@ -349,12 +349,20 @@ int build_and_grade(Graded& graded) {
     for (const auto& m : sandbox.layers_missing()) report.notes.push_back("sandbox layer missing: " + m);
     GradeLimits limits = opt.limits;
     limits.deadline = deadline;
+    // A run's own folder, made where the sandbox can plant nothing: for a
+    // failing image test's images (test_images.h) and for each render.
+    ImageFolders image_folders{[&area](std::string* error) { return area.fresh_render_folder(error); },
+                               [&opt](const std::string& dir) {
+                                 std::error_code ec;
+                                 if (!opt.keep_work) fs::remove_all(dir, ec);
+                               }};
     for (const auto& [part, binary] : binaries) {
       const auto worker = workers.find(part);
       // The log beside what was built from the submission (a verifier is the kit's, shared).
       const std::string log = (worker != workers.end() ? worker->second : binary) + ".grade.log";
       report.parts[part_index(part)] = grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, log, redactor,
-                                                    worker != workers.end() ? worker->second : "");
+                                                    worker != workers.end() ? worker->second : "",
+                                                    opt.html_path.empty() ? nullptr : &image_folders);
       save();  // every process of that run is dead by now
     }
     // 6. The renders of the report.
@@ -370,11 +378,8 @@ int build_and_grade(Graded& graded) {
       }
       job.seconds = std::min(opt.render_seconds, std::chrono::duration<double>(deadline - Clock::now()).count());
       job.build_seconds = opt.build_seconds;
-      job.fresh_folder = [&area](std::string* error) { return area.fresh_render_folder(error); };
-      job.discard_folder = [&opt](const std::string& dir) {
-        std::error_code ec;
-        if (!opt.keep_work) fs::remove_all(dir, ec);
-      };
+      job.fresh_folder = image_folders.fresh;
+      job.discard_folder = image_folders.discard;
       if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
       job.bound_note = [&area](const std::string& output, bool stopped) {
         return disk_bound_note(output, area, stopped);

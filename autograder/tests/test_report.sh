@@ -6,7 +6,12 @@
 #  1. the library renders are flagged and the report points at part 3 alone:
 #     Part 1 rendered alone with the solution for the rest must stay within
 #     the noise, so a check that flags correct renders fails this test too;
-#  2. the page opens in headless Chromium with every image decoded
+#  2. each failing Part 3 image test (ImageP3) shows, beside its message
+#     naming the worst region, its four images (render, reference,
+#     difference, p-values), which the verifier wrote into a folder pt-grade
+#     made for the run; its message in results.json sends the reader to the
+#     page, and results.json holds no image and stays within its bound;
+#  3. the page opens in headless Chromium with every image decoded
 #     (browser/check_report_in_browser.sh; skipped without Chromium), and the
 #     same check fails on a copy of the page with a broken image.
 # Usage: test_report.sh PT_GRADE KIT CHECKOUT WORKDIR
@@ -37,7 +42,31 @@ if grep -q 'look at part 1\|look at the parts together\|and part 1\|look at one 
 fi
 grep -o 'look at [^<]*' "$report" | sort | uniq -c
 
-echo "== 2. the page in a browser"
+echo "== 2. the image tests' failures, with their images"
+perl -0777 -ne '
+  my ($with, $without) = (0, 0);
+  for my $div (split /<div class=fail>/) {
+    next unless $div =~ /^<h3>P3T\d ImageP3\.(\w+)/;
+    my $test = $1;
+    if ($div =~ /DIFFERS from the reference; worst region (the whole|cell \(column)/ &&
+        $div =~ /images in the grader&#39;s HTML report, beside this message/ &&
+        $div =~ /<div class="renders test-images">((?:<figure><img alt="\w+" src="data:image\/png;base64,[A-Za-z0-9+\/=]+"><figcaption>[^<]+<\/figcaption><\/figure>){4})<\/div>/) {
+      print "ImageP3.$test: region named, 4 images\n"; ++$with;
+    } else {
+      print "ImageP3.$test failed without its region and images:\n", substr($div, 0, 1500), "\n"; ++$without;
+    }
+  }
+  exit($with > 0 && $without == 0 ? 0 : 1);
+' "$report" || { echo "a failing image test lacks its images or its region"; exit 1; }
+results="$work/out/results.json"
+size=$(stat -c %s "$results")
+[ "$size" -le 1000000 ] || { echo "results.json is $size bytes, over its bound"; exit 1; }
+grep -q "images in the grader's HTML report, beside this message" "$results" ||
+  { echo "results.json does not send an image test's reader to the report"; exit 1; }
+if grep -q 'base64\|/renders/run-' "$results"; then echo "results.json holds an image or a grader's folder"; exit 1; fi
+echo "results.json: $size bytes"
+
+echo "== 3. the page in a browser"
 set +e
 "$here/browser/check_report_in_browser.sh" "$report" "$work/browser"
 rc=$?

@@ -19,7 +19,14 @@ Image enlarged(const Image& img, int factor) {
   return out;
 }
 
+std::string& failure_image_dir() {
+  static std::string dir;
+  return dir;
+}
+
 }  // namespace
+
+void set_failure_image_dir(const std::string& dir) { failure_image_dir() = dir; }
 
 Image p_value_image(const Result& r) {
   Image img(r.width, r.height);
@@ -42,8 +49,10 @@ std::string write_failure_images(const Result& r) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : r.spec.scene;
   const char* env = std::getenv("PT_IMAGE_TEST_DIR");
-  const fs::path dir = fs::path(env && *env ? env : "image_test_failures") / name;
+  fs::path dir = !failure_image_dir().empty() ? failure_image_dir() : env && *env ? env : "image_test_failures";
   try {
+    // Absolute, so that a student can open it from the message wherever ctest ran the binary.
+    dir = fs::absolute(dir).lexically_normal() / name;
     fs::create_directories(dir);
     const int factor = std::max(1, 256 / r.width);
     write_png((dir / "render.png").string(), enlarged(r.render, factor));

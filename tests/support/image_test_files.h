@@ -2,15 +2,20 @@
 // What an image test leaves behind when it fails, for a person to look at:
 // the render, the (block-averaged) reference, their difference and a p-value
 // map, as PNGs enlarged to the stored image's size (linear EXRs of the render
-// and reference at the test's size too), in
-// $PT_IMAGE_TEST_DIR or else ./image_test_failures/, one folder per test.
-// Where the folder cannot be written (the grader's sandbox lets a verifier
-// write nothing), the message says so; the verdict does not depend on it.
+// and reference at the test's size too), one folder per test, in the folder
+// given by the test binary's --pt_image_dir=DIR (pt-grade's: it takes the
+// PNGs into its HTML report), else $PT_IMAGE_TEST_DIR, else
+// ./image_test_failures/. The message names the folder by its absolute path.
+// Where it cannot be written, the message says so; the verdict does not
+// depend on it.
 #include <string>
 
 #include "support/image_test.h"
 
 namespace pt::image_test {
+
+// The folder of --pt_image_dir (support/test_main.cpp): before any test runs.
+void set_failure_image_dir(const std::string& dir);
 
 // Writes the images; returns a sentence for the failure message naming the
 // folder and what each file shows (or why nothing was written).

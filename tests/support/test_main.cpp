@@ -6,6 +6,8 @@
 //                      and one when it ends, written to descriptor V, each
 //                      bound to the key read from descriptor S
 //   --pt_seed=N        seed offset for statistical tests (see seed.h)
+//   --pt_image_dir=DIR where a failing image test writes its images
+//                      (image_test_files.h): pt-grade's folder for its report
 //   --pt_test_timeout=S  the time limit of one graded test (default 20 s, as
 //                      pt-grade's; 0: none). A graded test still running
 //                      then is named with its task and a short stack of the
@@ -49,6 +51,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/graded.h"
+#include "support/image_test_files.h"
 #include "support/seed.h"
 
 namespace {
@@ -300,6 +303,7 @@ int main(int argc, char** argv) {
     }
     if (std::strncmp(argv[i], "--pt_seed=", 10) == 0) pt::test::set_seed_offset(std::strtoull(argv[i] + 10, nullptr, 10));
     if (std::strncmp(argv[i], "--pt_test_timeout=", 18) == 0) test_timeout = std::strtod(argv[i] + 18, nullptr);
+    if (std::strncmp(argv[i], "--pt_image_dir=", 15) == 0) pt::image_test::set_failure_image_dir(argv[i] + 15);
   }
   if (test_timeout > 0 && !pt::grading::registry().empty()) g_watchdog = new Watchdog(test_timeout, g_channel_fd >= 0);
   report({{"hello", {{"threads", threads}}}});

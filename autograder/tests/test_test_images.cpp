@@ -1,0 +1,167 @@
+// A failing image test's images reach the report (test_images.h) only as
+// what pt-grade chose to take: its own file names, regular files reached
+// without a link, well-formed PNGs within their bounds; and the page shows
+// them within its own bound, results.json not at all.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "html_report.h"
+#include "io/image_file.h"
+#include "report.h"
+#include "report_text.h"
+#include "test_images.h"
+
+namespace pt::grade {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A PNG as the verifier writes one (io/image_file.h), `w` x `h`; `noisy`
+// pixels compress little.
+std::string png_bytes(const fs::path& dir, int w, int h, bool noisy = false) {
+  Image img(w, h);
+  uint32_t x = 12345;
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    x = x * 1664525u + 1013904223u;
+    img.pixels[i] = noisy ? Spectrum((x >> 8) % 256 / 255.0, (x >> 16) % 256 / 255.0, (x >> 24) / 255.0)
+                          : Spectrum(double(i % 7) / 7.0, 0.5, 0.25);
+  }
+  const fs::path p = dir / "made.png";
+  write_png(p.string(), img);
+  std::string bytes = read_all(p);
+  fs::remove(p);
+  return bytes;
+}
+
+void write_bytes(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
+
+class TestImages : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::path(::testing::TempDir()) / ("pt_test_images_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    fs::create_directories(root / "ImageP3.Scene");
+    png = png_bytes(root, 256, 192);
+  }
+  void TearDown() override { fs::remove_all(root); }
+  fs::path root;
+  std::string png;
+};
+
+TEST_F(TestImages, AWritersPngPassesAndEveryDamageIsNamed) {
+  ASSERT_EQ(png_problem(png), "");
+  EXPECT_NE(png_problem("GIF89a" + png.substr(6)).find("not a PNG"), std::string::npos);
+  EXPECT_NE(png_problem(png + "trailing").find("after IEND"), std::string::npos);
+  EXPECT_NE(png_problem(png.substr(0, png.size() - 12)).find("no IEND"), std::string::npos);
+  EXPECT_NE(png_problem(png.substr(0, png.size() - 5)).find("cut short"), std::string::npos);
+  std::string flipped = png;
+  flipped[png.size() / 2] ^= 0x10;  // inside the image data
+  EXPECT_NE(png_problem(flipped).find("CRC"), std::string::npos);
+  EXPECT_NE(png_problem(png_bytes(root, 2000, 4)).find("beyond"), std::string::npos);
+  std::string longer = png;
+  longer[8 + 3] = 100;  // IHDR's length
+  EXPECT_NE(png_problem(longer), "");
+}
+
+TEST_F(TestImages, TheFourImagesAreTakenInOrderWithCaptions) {
+  for (const char* n : kTestImageNames) write_bytes(root / "ImageP3.Scene" / (std::string(n) + ".png"), png);
+  write_bytes(root / "ImageP3.Scene" / "render.exr", "not taken");
+  write_bytes(root / "ImageP3.Scene" / "extra.png", png);
+  std::string refused;
+  const auto images = take_test_images(root.string(), "ImageP3.Scene", &refused);
+  EXPECT_EQ(refused, "");
+  ASSERT_EQ(images.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(images[i].name, kTestImageNames[i]);
+    EXPECT_EQ(images[i].png, png);
+    EXPECT_FALSE(images[i].caption.empty());
+  }
+  // No folder for a test: nothing, and nothing refused.
+  EXPECT_TRUE(take_test_images(root.string(), "Other.Test", &refused).empty());
+  EXPECT_EQ(refused, "");
+}
+
+// What a writer other than the verifier could leave: each refused, named, and
+// the grader neither follows a link nor waits on a FIFO.
+TEST_F(TestImages, PlantedFilesAreRefused) {
+  const fs::path dir = root / "ImageP3.Scene";
+  write_bytes(root / "elsewhere.png", png);
+  fs::create_symlink(root / "elsewhere.png", dir / "render.png");
+  ASSERT_EQ(::mkfifo((dir / "reference.png").c_str(), 0600), 0);
+  write_bytes(dir / "difference.png", png + std::string(kMaxTestImageBytes, '\0'));
+  write_bytes(dir / "p_values.png", "<svg onload=alert(1)>");
+  std::string refused;
+  EXPECT_TRUE(take_test_images(root.string(), "ImageP3.Scene", &refused).empty());
+  for (const char* n : kTestImageNames) EXPECT_NE(refused.find(std::string(n) + ".png: "), std::string::npos) << refused;
+  EXPECT_NE(refused.find("over the bound"), std::string::npos);
+  EXPECT_NE(refused.find("not a PNG"), std::string::npos);
+  // The test's folder a link to one full of good images: not followed.
+  fs::create_directories(root / "real");
+  write_bytes(root / "real" / "render.png", png);
+  fs::create_directory_symlink(root / "real", root / "Linked.Test");
+  refused.clear();
+  EXPECT_TRUE(take_test_images(root.string(), "Linked.Test", &refused).empty());
+  EXPECT_NE(refused.find("not a folder"), std::string::npos);
+  // Names the grader did not choose.
+  EXPECT_TRUE(take_test_images(root.string(), "../real", &refused).empty());
+  EXPECT_TRUE(take_test_images(root.string(), "..", &refused).empty());
+}
+
+// Twenty failing tests, each with four images at the bound: the page shows
+// the first until kMaxTestImageBytesOnPage and says the rest were left out;
+// results.json carries no image and stays within its bound.
+TEST_F(TestImages, ThePageBoundsThemAndResultsJsonHasNone) {
+  const std::string big = png_bytes(root, 128, 96, true);
+  ASSERT_GT(big.size(), 20000u);
+  Report report;
+  PartResult part;
+  part.part = 3;
+  for (int i = 0; i < 20; ++i) {
+    TestResult t;
+    t.test = {"ImageP3.Scene" + std::to_string(i), "P3T4", 1, false, false};
+    t.status = TestResult::Status::Failed;
+    t.message = "worst region cell (column 1, row 0) of the 4x4 grid, test " + std::to_string(i);
+    for (const char* n : kTestImageNames) t.images.push_back({n, std::string("caption of ") + n, big});
+    part.tests.push_back(t);
+  }
+  report.parts.push_back(part);
+  report.complete = true;
+  HtmlReport page;
+  page.title = "images";
+  page.report = &report;
+  const fs::path html = root / "report.html", json = root / "results.json";
+  write_html_report(html.string(), page);
+  write_results_json(json.string(), report);
+  const std::string text = read_all(html);
+  size_t shown = 0;
+  for (size_t at = 0; (at = text.find("data:image/png;base64,", at)) != std::string::npos; ++at) ++shown;
+  const size_t per_test = 4 * big.size();
+  EXPECT_EQ(shown, 4 * (kMaxTestImageBytesOnPage / per_test));
+  EXPECT_GT(shown, 0u);
+  EXPECT_LT(shown, 4u * 20u);
+  EXPECT_NE(text.find("caption of p_values"), std::string::npos);
+  EXPECT_NE(text.find("its images are left out"), std::string::npos);
+  const std::string results = read_all(json);
+  EXPECT_LE(results.size(), kMaxResultsBytes);
+  EXPECT_EQ(results.find("base64"), std::string::npos);
+  EXPECT_EQ(results.find(base64(big).substr(0, 64)), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pt::grade
