@@ -323,7 +323,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
   std::set<std::string> hung_tasks;
   int threads_at_main = 0;
   uint64_t output_bytes = 0;
-  size_t tests_with_images = 0;
+  size_t tests_with_images = 0, images_beyond_bound = 0;
   std::string image_folder_error;
   auto unresolved = [&] {
     std::vector<TestResult*> left;
@@ -416,6 +416,8 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
         std::string refused;
         if (tests_with_images < kMaxImageTestsPerPart)
           t.images = take_test_images(image_folder.path, t.test.name, &refused);
+        else if (t.message.find(image_folder.path + "/" + t.test.name + "/") != std::string::npos)
+          ++images_beyond_bound;
         tests_with_images += !t.images.empty() || !refused.empty();
         if (!refused.empty())
           res.notes.push_back("images of the failing " + (t.test.hidden ? std::string("hidden test") : t.test.name) +
@@ -514,6 +516,9 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     res.notes.push_back(std::to_string(unknown) +
                         " verdict(s) for tests the manifest does not list were ignored (an out-of-date manifest? "
                         "build the target graded_manifest)");
+  if (images_beyond_bound > 0)
+    res.notes.push_back("the images of " + std::to_string(images_beyond_bound) + " more failing test(s) were not kept: " +
+                        std::to_string(kMaxImageTestsPerPart) + " tests' images per part at most");
   if (!image_folder_error.empty())
     res.notes.push_back("no folder for the image tests' images: " + image_folder_error);
   if (output_bytes > (1u << 20))

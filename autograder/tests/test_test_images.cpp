@@ -1,7 +1,8 @@
 // A failing image test's images reach the report (test_images.h) only as
 // what pt-grade chose to take: its own file names, regular files reached
 // without a link, well-formed PNGs within their bounds; and the page shows
-// them within its own bound, results.json not at all.
+// them within its own bound, results.json not at all; grade_binary gives each
+// run its folder and rewrites each message to point at the report.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,9 +12,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "grade_part.h"
 #include "html_report.h"
 #include "io/image_file.h"
 #include "report.h"
@@ -161,6 +164,53 @@ TEST_F(TestImages, ThePageBoundsThemAndResultsJsonHasNone) {
   EXPECT_LE(results.size(), kMaxResultsBytes);
   EXPECT_EQ(results.find("base64"), std::string::npos);
   EXPECT_EQ(results.find(base64(big).substr(0, 64)), std::string::npos);
+}
+
+// grade_binary with a binary whose six image tests all fail, each writing its
+// images: the run gets a folder of its own, named with --pt_image_dir and
+// removed after; the images of the first four failing tests are taken (T0's
+// file that is not a PNG refused and named), the two beyond the bound noted;
+// every message names the report or says the images were not kept, never
+// the folder.
+TEST_F(TestImages, GradeBinaryTakesTheImagesOfFailingTests) {
+  PartManifest tests;
+  for (int k = 0; k < 6; ++k) tests.push_back({"ImageP9.T" + std::to_string(k), "P9T1", 1, false, false});
+  SandboxOptions options;
+  options.confine = false;
+  Sandbox sandbox(options);
+  std::vector<std::string> made, discarded;
+  const ImageFolders folders{[&](std::string*) {
+                               const fs::path d = root / ("run-" + std::to_string(made.size() + 1));
+                               fs::create_directory(d);
+                               made.push_back(d.string());
+                               return d.string();
+                             },
+                             [&](const std::string& d) {
+                               discarded.push_back(d);
+                               fs::remove_all(d);
+                             }};
+  const PartResult r =
+      grade_binary(9, PT_FAILING_IMAGE_TESTS, tests, GradeLimits(), sandbox, "", Redactor(), "", &folders);
+  ASSERT_EQ(r.tests.size(), 6u);
+  ASSERT_EQ(made.size(), 1u);
+  EXPECT_EQ(discarded, made);
+  EXPECT_FALSE(fs::exists(made[0]));
+  const size_t expected[] = {3, 4, 4, 4, 0, 0};
+  for (int k = 0; k < 6; ++k) {
+    const TestResult& t = r.tests[k];
+    EXPECT_EQ(t.status, TestResult::Status::Failed) << t.test.name;
+    EXPECT_EQ(t.images.size(), expected[k]) << t.test.name;
+    EXPECT_EQ(t.message.find(made[0]), std::string::npos) << t.message;
+    EXPECT_NE(t.message.find("worst region"), std::string::npos) << t.message;
+    EXPECT_NE(t.message.find(k < 4 ? "images in the grader's HTML report, beside this message: render.png"
+                                   : "images in a folder the grader did not keep"),
+              std::string::npos)
+        << t.message;
+  }
+  std::string notes;
+  for (const auto& n : r.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("images of the failing ImageP9.T0 refused:\np_values.png: not a PNG"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("the images of 2 more failing test(s) were not kept"), std::string::npos) << notes;
 }
 
 }  // namespace
