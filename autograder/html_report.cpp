@@ -85,7 +85,10 @@ std::string base64_file(const std::string& path) {
   if (!in) return "";
   std::ostringstream s;
   s << in.rdbuf();
-  const std::string bytes = s.str();
+  return base64_text(s.str());
+}
+
+std::string base64_text(const std::string& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);

@@ -53,5 +53,7 @@ void write_html_report(const std::string& path, const HtmlReport& page);
 
 // Base64 of a file's bytes ("" when it cannot be read): for data: URIs.
 std::string base64_file(const std::string& path);
+// Base64 of `bytes`.
+std::string base64_text(const std::string& bytes);
 
 }  // namespace pt::grade
