@@ -335,6 +335,7 @@ int main(int argc, char** argv) {
   submission_cmd->add_option("--kit", sub.kit, "the grading kit (target grader-kit)")->type_name("DIR")->capture_default_str();
   submission_cmd->add_option("--json", sub.json_path, "write a Gradescope results.json")->type_name("FILE");
   submission_cmd->add_option("--html", sub.html_path, "write the report a person reads")->type_name("FILE");
+  submission_cmd->add_option("--prairielearn", sub.prairielearn_path, "write PrairieLearn's results.json")->type_name("FILE");
   submission_cmd->add_option("--work", sub.work, "folder for the build tree (default: TMPDIR)")->type_name("DIR");
   submission_cmd->add_flag("--keep-work", sub.keep_work, "keep the build tree");
   submission_cmd->add_flag("--no-renders", [&](std::int64_t) { sub.renders = false; }, "no renders in the report");

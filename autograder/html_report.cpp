@@ -90,7 +90,7 @@ std::string test_images(const TestResult& t, size_t* shown, size_t* image_bytes)
   *shown += bytes;
   std::string out = "<div class=\"renders test-images\">";
   for (const auto& i : t.images) {
-    const std::string b64 = base64(i.png);
+    const std::string b64 = base64_text(i.png);
     *image_bytes += b64.size();
     out += "<figure><img alt=\"" + esc(i.name) + "\" src=\"data:image/png;base64," + b64 + "\"><figcaption>" +
            esc(i.caption) + "</figcaption></figure>";
@@ -105,10 +105,10 @@ std::string base64_file(const std::string& path) {
   if (!in) return "";
   std::ostringstream s;
   s << in.rdbuf();
-  return base64(s.str());
+  return base64_text(s.str());
 }
 
-std::string base64(const std::string& bytes) {
+std::string base64_text(const std::string& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);

@@ -58,7 +58,7 @@ inline constexpr size_t kMaxTestImageBytesOnPage = 1u << 20;
 void write_html_report(const std::string& path, const HtmlReport& page);
 
 // Base64 of bytes, and of a file's bytes ("" when it cannot be read): for data: URIs.
-std::string base64(const std::string& bytes);
+std::string base64_text(const std::string& bytes);
 std::string base64_file(const std::string& path);
 
 }  // namespace pt::grade

@@ -120,8 +120,7 @@ json results_document(const Report& report, const TextBounds& bounds) {
   double score = 0;
   for (const auto& p : report.parts) {
     for (const auto& t : p.tests) {
-      std::string output = t.passed() ? "" : capped(t.message, bounds.message);
-      if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + capped(t.output, bounds.output);
+      const std::string output = test_output(t, bounds);
       score += t.passed() ? t.test.points : 0;
       const std::string uncounted = t.test.uncounted() ? " (extension, not counted)" : "";
       tests.push_back({{"name", t.test.task + " " + t.test.name + uncounted},
@@ -163,18 +162,30 @@ json results_document(const Report& report, const TextBounds& bounds) {
 
 }  // namespace
 
-void write_results_json(const std::string& path, const Report& report) {
-  // Each text is capped already; with every test's at its cap, halving the
-  // caps until the file fits keeps the bound for any number of tests.
+std::string test_output(const TestResult& t, const TextBounds& bounds) {
+  std::string output = t.passed() ? "" : capped(t.message, bounds.message);
+  if (!t.output.empty()) output += "\n\nLast output before it stopped:\n" + capped(t.output, bounds.output);
+  return output;
+}
+
+std::string fitted_document(const std::function<std::string(const TextBounds&)>& document, size_t max_bytes) {
   TextBounds bounds;
-  std::string text;
   for (;;) {
-    // Messages are whatever the tests printed: never let bad UTF-8 stop the report.
-    text = results_document(report, bounds).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-    if (text.size() <= kMaxResultsBytes || bounds.message <= 256) break;
+    std::string text = document(bounds);
+    if (text.size() <= max_bytes || bounds.message <= 256) return text;
     bounds = bounds.halved();
   }
-  write_file_atomically(path, text);
+}
+
+void write_results_json(const std::string& path, const Report& report) {
+  write_file_atomically(path, fitted_document(
+                                  [&](const TextBounds& bounds) {
+                                    // Messages are whatever the tests printed: never let bad UTF-8 stop the report.
+                                    return results_document(report, bounds).dump(2, ' ', false,
+                                                                                  json::error_handler_t::replace) +
+                                           "\n";
+                                  },
+                                  kMaxResultsBytes));
 }
 
 void print_report(const Report& report, bool show_hidden) {

@@ -1,6 +1,7 @@
 #pragma once
 // What a grading produced, and its two renderings: the score table a person
 // reads in a terminal, and Gradescope's results.json.
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +27,11 @@ struct Report {
   std::vector<std::string> instructor_notes;
   std::vector<std::string> sandbox_layers, sandbox_missing, sandbox_ids;
   double seconds = 0;
+  // Why the submission as a whole could not be graded ("" when it was): it
+  // was refused before anything was built (no task file, a file that is not
+  // one), or the grader itself failed. A part that does not build or run is
+  // graded: it scores 0.
+  std::string ungradable;
   bool complete = false;  // every part graded (false while grading, or after a budget ran out)
 };
 
@@ -36,6 +42,17 @@ struct TextBounds;
 std::vector<std::string> all_notes(const Report& report, const TextBounds& bounds);
 // The instructor's source flags as one text within `bounds`.
 std::string instructor_text(const Report& report, const TextBounds& bounds);
+
+// What a report says of one test: its failure message (nothing when it
+// passed) and, for a test that hung or crashed, the last output before it
+// stopped, each within `bounds`.
+std::string test_output(const TestResult& test, const TextBounds& bounds);
+
+// A report's text within max_bytes whatever the submission did: `document`
+// made with the default bounds, then with the bounds halved until it fits
+// (every text is capped, so halving them bounds the file for any number of
+// tests), or until a message's bound reaches 256 bytes.
+std::string fitted_document(const std::function<std::string(const TextBounds&)>& document, size_t max_bytes);
 
 // Writes Gradescope's results.json atomically (temporary file, rename): a
 // reader, or a grader killed half-way, sees one whole report or the previous

@@ -17,6 +17,7 @@
 #include "html_report.h"
 #include "kit_build.h"
 #include "manifest.h"
+#include "prairielearn_report.h"
 #include "redact.h"
 #include "report.h"
 #include "report_renders.h"
@@ -165,6 +166,7 @@ int grade_submission(const SubmissionOptions& opt) {
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!opt.json_path.empty()) write_results_json(opt.json_path, report);
     if (!opt.html_path.empty()) write_html_report(opt.html_path, page);
+    if (!opt.prairielearn_path.empty()) write_prairielearn_json(opt.prairielearn_path, page);
   };
   auto set_part = [&](int part, const std::string& why) {
     const size_t i = part_index(part);
@@ -182,6 +184,7 @@ int grade_submission(const SubmissionOptions& opt) {
     const std::string each = summary(why, "the whole list is in the report's notes");
     for (auto& p : report.parts) set_part(p.part, each);
     report.notes.push_back(why);
+    report.ungradable = why;
     report.complete = true;
     save();
     print_report(report, false);
@@ -220,6 +223,7 @@ int grade_submission(const SubmissionOptions& opt) {
     return build_and_grade(graded);
   } catch (const std::exception& e) {
     report.notes.push_back(std::string("the grader failed (an instructor must look): ") + e.what());
+    report.ungradable = "the grader failed; please tell your instructor";
     report.complete = true;
     save();
     print_report(report, false);
@@ -366,7 +370,7 @@ int build_and_grade(Graded& graded) {
       save();  // every process of that run is dead by now
     }
     // 6. The renders of the report.
-    if (opt.renders && !opt.html_path.empty()) {
+    if (opt.renders && (!opt.html_path.empty() || !opt.prairielearn_path.empty())) {
       RenderJob job;
       job.kit = kit.string();
       job.tree = tree.string();

@@ -39,6 +39,7 @@ struct SubmissionOptions {
   std::string kit;        // the grading kit (tools/release/, target grader-kit)
   std::string json_path;  // Gradescope results.json
   std::string html_path;  // the report a person reads
+  std::string prairielearn_path;  // PrairieLearn's results.json (prairielearn_report.h)
   std::string work;       // where the build tree goes (default: TMPDIR)
   bool keep_work = false;
   bool renders = true;

@@ -1,6 +1,7 @@
 // Reports have a size whatever a submission does (report_text.h): each text is
 // cut at its bound with a note, a long part-level reason is said once, and
-// results.json stays within kMaxResultsBytes for any number of huge messages.
+// results.json, Gradescope's and PrairieLearn's, stays within kMaxResultsBytes
+// for any number of huge messages (and renders).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -9,7 +10,9 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include <stb_image_write.h>
 
+#include "prairielearn_report.h"
 #include "report.h"
 #include "report_text.h"
 
@@ -69,8 +72,8 @@ TEST(ReportBounds, APartLevelReasonIsNotCopiedIntoEveryTest) {
 }
 
 // 500 tests, each with 64 KiB of the costliest characters (384 KiB of JSON) in
-// its message and output, notes and flags: 380 MB uncapped; results.json fits.
-TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
+// its message and output, notes and flags: 380 MB uncapped.
+Report costly_report() {
   const std::string costly(64 << 10, '\x01');
   Report report;
   PartResult part;
@@ -87,6 +90,11 @@ TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
   report.parts.push_back(part);
   report.instructor_notes.push_back(costly);
   report.notes.push_back(costly);
+  return report;
+}
+
+TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
+  const Report report = costly_report();
   const std::string path = ::testing::TempDir() + "pt_report_bounds.json";
   write_results_json(path, report);
   std::ifstream in(path, std::ios::binary);
@@ -97,6 +105,62 @@ TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
   EXPECT_EQ(doc["tests"].size(), 501u);  // every test listed, and the flags
   EXPECT_NE(doc["tests"][0]["output"].get<std::string>().find("pt-grade cut"), std::string::npos);
   std::remove(path.c_str());
+}
+
+// A 256x192 PNG of noise (it compresses to nothing: about 150 KB), the
+// worst a render can be.
+std::string noise_png(const std::string& name, unsigned seed) {
+  std::vector<unsigned char> pixels(256 * 192 * 3);
+  for (auto& p : pixels) p = static_cast<unsigned char>((seed = seed * 1664525u + 1013904223u) >> 24);
+  const std::string path = ::testing::TempDir() + name;
+  stbi_write_png(path.c_str(), 256, 192, 3, pixels.data(), 256 * 3);
+  return path;
+}
+
+// The costly report again with 20 scenes of noise: PrairieLearn's file
+// keeps every test, shows what images fit at half size within their bound,
+// says how many it left out, and stays within 1 MB.
+TEST(ReportBounds, PrairieLearnResultsFitWhateverTheMessagesAndRenders) {
+  const Report report = costly_report();
+  HtmlReport page;
+  page.report = &report;
+  const std::string student = noise_png("pt_noise_a.png", 1), reference = noise_png("pt_noise_b.png", 2);
+  for (int i = 0; i < 20; ++i) {
+    RenderComparison c;
+    c.scene = "scene" + std::to_string(i);
+    c.student_png = student;
+    c.reference_png = reference;
+    c.student_parts = {1};
+    page.renders.push_back(c);
+  }
+  const std::string text = prairielearn_json(page);
+  EXPECT_LE(text.size(), kMaxResultsBytes);
+  const auto doc = nlohmann::json::parse(text);
+  EXPECT_TRUE(doc["gradable"].get<bool>());
+  EXPECT_EQ(doc["tests"].size(), 500u);  // the instructor's flags are not the student's
+  size_t image_bytes = 0;
+  for (const auto& image : doc["images"]) image_bytes += image["url"].get<std::string>().size();
+  EXPECT_GT(doc["images"].size(), 0u);
+  EXPECT_LE(image_bytes, kMaxImageBytes);
+  const std::string output = doc["output"];
+  EXPECT_NE(output.find("1/2 of their size"), std::string::npos) << output.substr(output.size() - 500);
+  EXPECT_NE(output.find(std::to_string(20 - doc["images"].size() / 2) + " scene(s) rendered but not shown"),
+            std::string::npos);
+  std::remove(student.c_str());
+  std::remove(reference.c_str());
+}
+
+// A submission refused as a whole: not gradable, why, and no list of zeros.
+TEST(ReportBounds, PrairieLearnRefusedSubmissionIsNotGradable) {
+  Report report = costly_report();
+  report.ungradable = "submission rejected before building:\n  no task file found in /grade/student";
+  HtmlReport page;
+  page.report = &report;
+  const auto doc = nlohmann::json::parse(prairielearn_json(page));
+  EXPECT_FALSE(doc["gradable"].get<bool>());
+  EXPECT_EQ(doc["format_errors"][0].get<std::string>(), report.ungradable);
+  EXPECT_TRUE(doc["tests"].empty());
+  EXPECT_TRUE(doc["images"].empty());
 }
 
 }  // namespace

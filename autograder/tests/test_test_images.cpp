@@ -163,7 +163,7 @@ TEST_F(TestImages, ThePageBoundsThemAndResultsJsonHasNone) {
   const std::string results = read_all(json);
   EXPECT_LE(results.size(), kMaxResultsBytes);
   EXPECT_EQ(results.find("base64"), std::string::npos);
-  EXPECT_EQ(results.find(base64(big).substr(0, 64)), std::string::npos);
+  EXPECT_EQ(results.find(base64_text(big).substr(0, 64)), std::string::npos);
 }
 
 // grade_binary with a binary whose six image tests all fail, each writing its

@@ -1,5 +1,5 @@
-# Writes the student release or the grading kit (cmake -P; see CMakeLists.txt).
-#   -DMODE=student|kit -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
+# Writes the student release, the grading kit or a grader's export (cmake -P; see CMakeLists.txt).
+#   -DMODE=student|kit|gradescope|prairielearn -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
 #   kit only: -DMANIFEST=<graded_manifest.json> -DPT_GRADE=<pt-grade> -DPT_LINK_GUARD=<pt-link-guard>
 #             -DPT_LIBRARY_CHECK=<pt-library-check>
 # Every file is chosen by an allowlist: what is not named here is not shipped.
@@ -175,6 +175,19 @@ function(without_instructor_notes)
   endforeach()
 endfunction()
 
+# copy_course_repository(): the instructor's whole repository, the solution
+# included, under OUT/pathtracer/: what a grader's image builds its kit from
+# (autograder/build_grader_image.sh).
+macro(copy_course_repository)
+  set(prefix pathtracer/)
+  foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
+    copy_file(${S}/${f} ${prefix}${f})
+  endforeach()
+  foreach(d skeleton tasks reference tests autograder scenes handouts tools)  # tools/: the root CMakeLists adds it
+    copy_tree(${d} EXCLUDE ${scene_excludes})
+  endforeach()
+endmacro()
+
 if(MODE STREQUAL "student")
   copy_file(${S}/tools/release/README.student.md README.md)
   foreach(f CMakeLists.txt setup.sh .gitignore)
@@ -200,7 +213,9 @@ if(MODE STREQUAL "student")
   copy_tree(tests/viewer EXCLUDE "/node_modules/")
   # The grader, for `pt-grade run` on the student's own machine; not the
   # instructor's threat model, kit or Gradescope packaging.
-  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope)/" "^autograder/README\\.md$" "^autograder/tests/(test_gradescope|test_report)\\.sh$" "^autograder/tests/browser/")
+  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope|prairielearn)/" "^autograder/README\\.md$"
+            "^autograder/(build_grader_image|grading_args)\\.sh$"
+            "^autograder/tests/(test_gradescope|test_prairielearn|test_report)\\.sh$" "^autograder/tests/browser/")
   # The benchmark, without the ladder of traversals from the reference to Embree.
   copy_tree(tools/bench EXCLUDE "/ladder\\.(h|cpp)$")
   # The generator of the library's procedural scene (the library tests render
@@ -277,15 +292,16 @@ elseif(MODE STREQUAL "gradescope")
   foreach(f setup.sh run_autograder README.md)
     copy_file(${S}/autograder/gradescope/${f} ${f})
   endforeach()
-  set(prefix pathtracer/)
-  foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
-    copy_file(${S}/${f} ${prefix}${f})
+  copy_course_repository()
+elseif(MODE STREQUAL "prairielearn")
+  # PrairieLearn's grader image: the Dockerfile at the top of the build
+  # context, the course's repository below (its entry point is in it).
+  foreach(f Dockerfile README.md)
+    copy_file(${S}/autograder/prairielearn/${f} ${f})
   endforeach()
-  foreach(d skeleton tasks reference tests autograder scenes handouts tools)  # tools/: the root CMakeLists adds it
-    copy_tree(${d} EXCLUDE ${scene_excludes})
-  endforeach()
+  copy_course_repository()
 else()
-  message(FATAL_ERROR "export.cmake: MODE must be student, kit or gradescope, not '${MODE}'")
+  message(FATAL_ERROR "export.cmake: MODE must be student, kit, gradescope or prairielearn, not '${MODE}'")
 endif()
 
 if(DEFINED ARCHIVE AND MODE STREQUAL "gradescope")
