@@ -309,6 +309,11 @@ int main(int argc, char** argv) {
   mutant_cmd->add_option("--worker", worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
   add_grading(mutant_cmd);
   mutant_cmd->add_flag("--fail-fast", opt.limits.stop_at_first_failure, "stop at the first failing test");
+  std::string cheap_first;
+  mutant_cmd->add_option("--cheap-first", cheap_first,
+                         "with --fail-fast: run the tests that took least time in this results.json first "
+                         "(the reference's; a missing file changes nothing)")
+      ->type_name("FILE");
 
   std::string manifest_out;
   std::vector<std::string> listed, solution_files;
@@ -386,7 +391,10 @@ int main(int argc, char** argv) {
   try {
     if (!worker.empty()) opt.workers[part] = worker;
     if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
-    if (*mutant_cmd) return check_mutant(grade_one(part, binary, opt));
+    if (*mutant_cmd) {
+      opt.limits.cheap_first = test_seconds_from_results(cheap_first);
+      return check_mutant(grade_one(part, binary, opt));
+    }
     if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
     if (*sandbox_cmd) return print_sandbox(opt.sandbox);
     if (*check_cmd) {

@@ -302,6 +302,27 @@ PartResult pending_part(int part, const PartManifest& tests, const std::string& 
   return r;
 }
 
+namespace {
+
+// The tests of the cheapest tier that has any: under 0.25 s, under 2 s, the
+// rest (a test with no time on record counts as cheap).
+std::vector<TestResult*> cheapest_tier(const std::vector<TestResult*>& tests, const std::map<std::string, double>& seconds) {
+  if (seconds.empty()) return tests;
+  auto cost = [&](const TestResult* t) {
+    const auto it = seconds.find(t->test.name);
+    return it == seconds.end() ? 0.0 : it->second;
+  };
+  for (const double bound : {0.25, 2.0}) {
+    std::vector<TestResult*> tier;
+    for (TestResult* t : tests)
+      if (cost(t) < bound) tier.push_back(t);
+    if (!tier.empty()) return tier;
+  }
+  return tests;
+}
+
+}  // namespace
+
 PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
                         Sandbox& sandbox, const std::string& log_path, const Redactor& redactor,
                         const std::string& worker, const ImageFolders* images) {
@@ -352,6 +373,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     for (TestResult* t : left)
       if (!hung_tasks.count(t->test.task)) next.push_back(t);
     if (next.empty()) next = left;
+    if (limits.stop_at_first_failure) next = cheapest_tier(next, limits.cheap_first);
     std::string filter = "--gtest_filter=";
     for (const TestResult* t : next) filter += t->test.name + (t == next.back() ? "" : ":");
     // The test main's own limit (support/test_main.cpp) prints the hung

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -130,7 +131,11 @@ json results_document(const Report& report, const TextBounds& bounds) {
                        {"output", output},
                        {"visibility", t.test.hidden ? "after_published" : "visible"},
                        {"extra_data",
-                        {{"part", p.part}, {"test", t.test.name}, {"task", t.test.task}, {"result", t.status_name()}}}});
+                        {{"part", p.part},
+                         {"test", t.test.name},
+                         {"task", t.test.task},
+                         {"result", t.status_name()},
+                         {"seconds", std::round(t.seconds * 1000) / 1000}}}});
     }
     parts[std::to_string(p.part)] = {
         {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}, {"seconds", p.seconds}};
@@ -247,6 +252,22 @@ void print_report(const Report& report, bool show_hidden) {
   if (!notes.empty()) std::printf("\nNotes:\n");
   for (const auto& n : notes) std::fputs(folded(n, "  ").c_str(), stdout);
   std::fflush(stdout);
+}
+
+std::map<std::string, double> test_seconds_from_results(const std::string& path) {
+  std::map<std::string, double> seconds;
+  std::ifstream in(path);
+  if (!in) return seconds;
+  const json doc = json::parse(in, nullptr, false);
+  if (!doc.is_object() || !doc.contains("tests") || !doc["tests"].is_array()) return seconds;
+  for (const auto& t : doc["tests"]) {
+    const auto extra = t.find("extra_data");
+    if (extra == t.end() || !extra->is_object()) continue;
+    const auto name = extra->find("test"), took = extra->find("seconds");
+    if (name != extra->end() && name->is_string() && took != extra->end() && took->is_number())
+      seconds[name->get<std::string>()] = took->get<double>();
+  }
+  return seconds;
 }
 
 }  // namespace pt::grade

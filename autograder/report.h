@@ -61,6 +61,10 @@ std::string fitted_document(const std::function<std::string(const TextBounds&)>&
 // kMaxResultsBytes, whatever the submission did. Throws std::runtime_error when the file cannot be written.
 void write_results_json(const std::string& path, const Report& report);
 
+// The seconds each test took in a results.json written as above (its tests'
+// extra_data); empty when the file is missing or not one of ours.
+std::map<std::string, double> test_seconds_from_results(const std::string& path);
+
 // The score table, the failed tests with their whole messages (hidden ones by
 // task only, unless show_hidden; long lines folded, never cut) and the notes,
 // on stdout.

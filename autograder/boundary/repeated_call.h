@@ -106,6 +106,7 @@ class RepeatedCall {
     given_ = rng;
     rng = states_[at_];
     expected_ = rng;
+    test::replayed_by_the_boundary = replay_one_in_ > 0;
     return answers_[at_++];
   }
 

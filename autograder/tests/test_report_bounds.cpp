@@ -161,6 +161,35 @@ TEST(ReportBounds, PrairieLearnRefusedSubmissionIsNotGradable) {
   EXPECT_EQ(doc["format_errors"][0].get<std::string>(), report.ungradable);
   EXPECT_TRUE(doc["tests"].empty());
   EXPECT_TRUE(doc["images"].empty());
+
+
+// check-mutant --cheap-first reads each test's seconds back from a
+// results.json; a file that is missing, not JSON or not ours reads as no times
+// (the mutant's tests then run in their usual order).
+TEST(ResultsTimes, EachTestsSecondsReadBackAsWritten) {
+  Report report;
+  PartResult part;
+  part.part = 3;
+  for (const double took : {0.125, 14.5}) {
+    TestResult t;
+    t.test = {"Suite.Took" + std::to_string(int(took * 1000)), "P3T3", 1, false, false};
+    t.status = TestResult::Status::Passed;
+    t.seconds = took;
+    part.tests.push_back(t);
+  }
+  report.parts.push_back(part);
+  const std::string path = ::testing::TempDir() + "pt_results_times.json";
+  write_results_json(path, report);
+  const auto seconds = test_seconds_from_results(path);
+  ASSERT_EQ(seconds.size(), 2u);
+  EXPECT_DOUBLE_EQ(seconds.at("Suite.Took125"), 0.125);
+  EXPECT_DOUBLE_EQ(seconds.at("Suite.Took14500"), 14.5);
+  for (const char* text : {"not json {", "[1, 2]", "{\"tests\": 3}", "{\"tests\": [{\"extra_data\": 1}]}"}) {
+    std::ofstream(path, std::ios::trunc) << text;
+    EXPECT_TRUE(test_seconds_from_results(path).empty()) << text;
+  }
+  std::remove(path.c_str());
+  EXPECT_TRUE(test_seconds_from_results(path).empty());
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 // of earlier answers that it averages) fails the test that called it, saying
 // so, in the tests' own process as across the grader's boundary, which
 // replays calls of its own where the worker cannot predict them
-// (autograder/boundary/repeated_call.h).
+// (autograder/boundary/repeated_call.h): a call it answers that way is not
+// replayed here again.
 //
 // A test's power does not depend on how many numbers a task draws: only the
 // states before and after a call are compared.
@@ -40,9 +41,10 @@ inline bool replay_this_call() {
 template <class Task>
 auto replayed(const std::string& name, Rng& rng, Task&& task) -> std::invoke_result_t<Task&, Rng&> {
   const Rng given = rng;
+  replayed_by_the_boundary = false;
   const auto answer = task(rng);
   if (!draws_between(given, rng)) throw GeneratorContractBroken(generator_moved_back(name));
-  if (replay_this_call()) {
+  if (!replayed_by_the_boundary && replay_this_call()) {
     Rng again = given;
     bool same = false;
     try {
