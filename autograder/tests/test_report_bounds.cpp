@@ -161,7 +161,7 @@ TEST(ReportBounds, PrairieLearnRefusedSubmissionIsNotGradable) {
   EXPECT_EQ(doc["format_errors"][0].get<std::string>(), report.ungradable);
   EXPECT_TRUE(doc["tests"].empty());
   EXPECT_TRUE(doc["images"].empty());
-
+}
 
 // check-mutant --cheap-first reads each test's seconds back from a
 // results.json; a file that is missing, not JSON or not ours reads as no times
