@@ -180,6 +180,10 @@ if(MODE STREQUAL "student")
   foreach(f CMakeLists.txt setup.sh .gitignore)
     copy_file(${S}/${f} ${f})
   endforeach()
+  # Pushed as a GitHub Classroom template repository, the release grades each
+  # push with its visible tests (github-classroom/, docs/instructors.md).
+  copy_file(${S}/tools/release/github-classroom/classroom.yml .github/workflows/classroom.yml)
+  copy_file(${S}/tools/release/github-classroom/grade.sh .github/classroom/grade.sh)
   file(READ ${S}/CMakePresets.json presets)
   without_presets_named(presets fuzz)
   file(WRITE ${OUT}/CMakePresets.json "${presets}\n")
