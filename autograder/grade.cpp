@@ -351,6 +351,9 @@ int main(int argc, char** argv) {
   add_grading(submission_cmd);
   submission_cmd->add_flag("--count-extensions", sub.count_extensions,
                            "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
+  submission_cmd->add_flag("--leaderboard", sub.leaderboard,
+                           "add Gradescope's leaderboard: Part 2's SAH cost against the solution's, primitive tests "
+                           "and node visits per ray (autograder/leaderboard.h)");
 
   CheckOptions check;
   check.source_dir = build_paths::source_root();

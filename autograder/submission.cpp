@@ -16,6 +16,7 @@
 #include "command.h"
 #include "html_report.h"
 #include "kit_build.h"
+#include "leaderboard.h"
 #include "manifest.h"
 #include "redact.h"
 #include "report.h"
@@ -356,6 +357,10 @@ int build_and_grade(Graded& graded) {
       report.parts[part_index(part)] = grade_binary(part, binary, manifest.parts.at(part), limits, sandbox, log, redactor,
                                                     worker != workers.end() ? worker->second : "");
       save();  // every process of that run is dead by now
+    }
+    if (opt.leaderboard) {
+      add_leaderboard(report, kit.string(), binaries, workers, sandbox, deadline);
+      save();
     }
     // 6. The renders of the report.
     if (opt.renders && !opt.html_path.empty()) {

@@ -204,7 +204,7 @@ if(MODE STREQUAL "student")
   copy_tree(tests/viewer EXCLUDE "/node_modules/")
   # The grader, for `pt-grade run` on the student's own machine; not the
   # instructor's threat model, kit or Gradescope packaging.
-  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope)/" "^autograder/README\\.md$" "^autograder/tests/(test_gradescope|test_report)\\.sh$" "^autograder/tests/browser/")
+  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope)/" "^autograder/README\\.md$" "^autograder/tests/(test_gradescope|test_report|test_leaderboard)\\.sh$" "^autograder/tests/check_leaderboard\\.cmake$" "^autograder/tests/browser/")
   # The benchmark, without the ladder of traversals from the reference to Embree.
   copy_tree(tools/bench EXCLUDE "/ladder\\.(h|cpp)$")
   # The generator of the library's procedural scene (the library tests render
