@@ -8,9 +8,12 @@
 #include <set>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "check_answer.h"
+#include "classroom_result.h"
 #include "command.h"
 #include "ignore_rules.h"
 #include "manifest.h"
@@ -93,6 +96,51 @@ std::vector<std::string> edited_files(const fs::path& source, const json& shippe
   return problems;
 }
 
+// The visible points of the build's manifest (0 when it has none yet): what a
+// result that stopped early is out of.
+double visible_points(const fs::path& build) {
+  try {
+    Manifest m = read_manifest((build / "tests" / "graded_manifest.json").string());
+    leave_extensions_uncounted(m);
+    double sum = 0;
+    for (const auto& [part, tests] : m.parts)
+      for (const auto& t : tests) sum += t.hidden ? 0 : t.points;
+    return sum;
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+// With --format github-classroom, stdout carries the result alone: what the
+// check prints for a person goes to stderr (the workflow's log) until the
+// result is written to the stdout it had.
+class ResultChannel {
+ public:
+  explicit ResultChannel(bool classroom) {
+    if (!classroom) return;
+    std::fflush(stdout);
+    fd_ = ::dup(STDOUT_FILENO);
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);
+  }
+  ~ResultChannel() { to_result(); }
+  bool active() const { return fd_ >= 0; }
+  void write(const std::string& text) {
+    to_result();
+    std::fputs(text.c_str(), stdout);
+    std::fflush(stdout);
+  }
+
+ private:
+  void to_result() {
+    if (fd_ < 0) return;
+    std::fflush(stdout);
+    ::dup2(fd_, STDOUT_FILENO);
+    ::close(fd_);
+    fd_ = -1;
+  }
+  int fd_ = -1;
+};
+
 }  // namespace
 
 std::map<int, HiddenNotRun> hidden_not_run_in(const std::string& source_dir) {
@@ -107,10 +155,14 @@ std::map<int, HiddenNotRun> hidden_not_run_in(const std::string& source_dir) {
 
 int check_submission(const CheckOptions& opt) {
   const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
+  ResultChannel result(opt.format == "github-classroom");
   const json facts = read_facts(source);
   if (!fs::is_regular_file(build / "CMakeCache.txt")) {
     std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
                  build.c_str());
+    if (result.active())
+      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
+                                     build.string() + " is not a configured build", 0));
     return 2;
   }
   std::map<int, std::string> expected;
@@ -139,6 +191,9 @@ int check_submission(const CheckOptions& opt) {
     for (const auto& p : sub.problems) why += "\n  " + p;
     std::fputs(indented(why).c_str(), stdout);
     std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
+    if (result.active())
+      result.write(classroom_stopped("fail", "The files: the grader would reject every part", why,
+                                     visible_points(build)));
     return 1;
   }
   std::set<int> submitted;
@@ -235,6 +290,9 @@ int check_submission(const CheckOptions& opt) {
   const fs::path manifest_path = build / "tests" / "graded_manifest.json";
   if (!fs::is_regular_file(manifest_path)) {
     std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
+    if (result.active())
+      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
+                                     manifest_path.string() + " not found: the release is not built", 0));
     return 2;
   }
   // The student cannot know whether the instructor counts the extension
@@ -294,6 +352,11 @@ int check_submission(const CheckOptions& opt) {
   if (!started.parts.empty()) print_report(started, false);
   if (!folded_parts.empty()) std::printf("\nParts not started (folded):\n%s", folded_parts.c_str());
   std::fflush(stdout);
+  if (result.active()) {
+    std::map<int, ClassroomFile> files;
+    for (const auto& f : sub.files) files[f.part] = {"tasks/" + f.name, f.text};
+    result.write(classroom_result(report, files, index_handouts((source / "handouts").string()), problems));
+  }
   return problems.empty() ? 0 : 1;
 }
 

@@ -23,6 +23,10 @@
 //
 // Exit status 0 when nothing above differs from what the grader will do
 // (whatever the score), 1 when something does, 2 when it could not check.
+//
+// With format "github-classroom" the same check prints, on stdout, only its
+// result for GitHub Classroom (classroom_result.h), and everything above on
+// stderr: the workflow's log shows it, the step's output is the result.
 #include <map>
 #include <string>
 
@@ -38,6 +42,7 @@ struct CheckOptions {
   std::string build_dir;   // its build folder (cmake --preset default)
   GradeLimits limits;
   SandboxOptions sandbox;
+  std::string format = "text";  // or "github-classroom"
 };
 
 int check_submission(const CheckOptions& options);

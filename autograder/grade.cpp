@@ -357,6 +357,9 @@ int main(int argc, char** argv) {
   add_grading(submission_cmd);
   submission_cmd->add_flag("--count-extensions", sub.count_extensions,
                            "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
+  submission_cmd->add_flag("--leaderboard", sub.leaderboard,
+                           "add Gradescope's leaderboard: Part 2's SAH cost against the solution's, primitive tests "
+                           "and node visits per ray (autograder/leaderboard.h)");
 
   CheckOptions check;
   check.source_dir = build_paths::source_root();
@@ -368,6 +371,11 @@ int main(int argc, char** argv) {
       "files, each part built alone, the visible tests, the hidden points not run)");
   check_cmd->add_option("TASKS", check.tasks, "the folder or .zip you will submit")->capture_default_str();
   check_cmd->add_option("--build-dir", check.build_dir, "the release's build folder")->type_name("DIR")->capture_default_str();
+  check_cmd->add_option("--format", check.format,
+                        "github-classroom: only the result for GitHub Classroom's reporter on stdout (JSON), the rest "
+                        "on stderr")
+      ->check(CLI::IsMember({"text", "github-classroom"}))
+      ->capture_default_str();
   add_grading(check_cmd);
 
   CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");

@@ -197,10 +197,9 @@ RunOutcome read_outcome(int fd) {
   return r;
 }
 
-// One run of a verifier with its worker beside it, each in its own sandbox
-// run (its own PID namespace where there are namespaces): the worker can
-// neither see the verifier's memory nor write its verdict channel. The
-// worker's run is driven by a helper process, not a thread: the sandbox
+}  // namespace
+
+// The worker's run is driven by a helper process, not a thread: the sandbox
 // clones its processes with a raw clone(), which in a process with a second
 // thread could copy a lock that thread holds (malloc's) and hang the copy.
 RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& watch, const std::string& worker,
@@ -250,8 +249,6 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
   }
   return run;
 }
-
-}  // namespace
 
 const char* TestResult::status_name() const {
   switch (status) {

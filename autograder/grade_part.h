@@ -90,4 +90,11 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
                         Sandbox& sandbox, const std::string& log_path, const Redactor& redactor = Redactor(),
                         const std::string& worker = "", const ImageFolders* images = nullptr);
 
+// One run of a verifier (`request`, watched by `watch`) with its worker beside
+// it, each in its own sandbox run (its own PID namespace where there are
+// namespaces): the worker can neither see the verifier's memory nor write its
+// verdict channel. Returns the verifier's run; the worker's is in worker_run.
+RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& watch, const std::string& worker,
+                           RunOutcome& worker_run);
+
 }  // namespace pt::grade

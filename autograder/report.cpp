@@ -162,6 +162,11 @@ json results_document(const Report& report, const TextBounds& bounds) {
                     {"missing", report.sandbox_missing},
                     {"ids", report.sandbox_ids}}}}}}}};
   if (!text.empty()) doc["output"] = text;
+  if (!report.leaderboard.empty()) {
+    json board = json::array();
+    for (const auto& e : report.leaderboard) board.push_back({{"name", e.name}, {"value", e.value}, {"order", e.order}});
+    doc["leaderboard"] = board;
+  }
   return doc;
 }
 

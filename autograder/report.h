@@ -18,6 +18,14 @@ struct HiddenNotRun {
   double points = 0;
 };
 
+// One entry of Gradescope's leaderboard (leaderboard.h): order "asc" when
+// smaller is better.
+struct LeaderboardEntry {
+  std::string name;
+  double value = 0;
+  std::string order;
+};
+
 struct Report {
   std::vector<PartResult> parts;
   std::map<int, HiddenNotRun> hidden_not_run;  // by part
@@ -26,6 +34,9 @@ struct Report {
   // in results.json as a hidden test worth nothing, never shown to students.
   std::vector<std::string> instructor_notes;
   std::vector<std::string> sandbox_layers, sandbox_missing, sandbox_ids;
+  // results.json's "leaderboard", written only when not empty: only when the
+  // instructor turned it on (pt-grade submission --leaderboard).
+  std::vector<LeaderboardEntry> leaderboard;
   double seconds = 0;
   // Why the submission as a whole could not be graded ("" when it was): it
   // was refused before anything was built (no task file, a file that is not

@@ -16,6 +16,7 @@
 #include "command.h"
 #include "html_report.h"
 #include "kit_build.h"
+#include "leaderboard.h"
 #include "manifest.h"
 #include "prairielearn_report.h"
 #include "redact.h"
@@ -368,6 +369,10 @@ int build_and_grade(Graded& graded) {
                                                     worker != workers.end() ? worker->second : "",
                                                     opt.html_path.empty() ? nullptr : &image_folders);
       save();  // every process of that run is dead by now
+    }
+    if (opt.leaderboard) {
+      add_leaderboard(report, kit.string(), binaries, workers, sandbox, deadline);
+      save();
     }
     // 6. The renders of the report.
     if (opt.renders && (!opt.html_path.empty() || !opt.prairielearn_path.empty())) {

@@ -44,6 +44,7 @@ struct SubmissionOptions {
   bool keep_work = false;
   bool renders = true;
   bool count_extensions = false;  // extension tasks' points (P5T3) count
+  bool leaderboard = false;       // results.json's Part 2 leaderboard (leaderboard.h)
   double build_seconds = 50;    // one part's compilation and link
   double render_seconds = 60;   // all renders of the report together
   double budget_seconds = 600;  // the whole submission

@@ -1,17 +1,7 @@
 # Fails unless a Gradescope results.json gives full marks: every test passed,
 # the score equals the sum of the maximum scores, and that sum is not zero.
 #   cmake -DRESULTS=<results.json> -P expect_score.cmake
-# CMake's arithmetic is integer: points (multiples of 0.5, 0.25 at the finest)
-# are compared in hundredths.
-function(to_hundredths value out)
-  if(NOT value MATCHES "^([0-9]+)(\\.([0-9]*))?$")
-    message(FATAL_ERROR "${RESULTS}: ${value} is not a number of points")
-  endif()
-  set(whole ${CMAKE_MATCH_1})
-  string(SUBSTRING "${CMAKE_MATCH_3}00" 0 2 frac)
-  math(EXPR h "${whole} * 100 + ${frac}")
-  set(${out} ${h} PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/hundredths.cmake)
 
 file(READ ${RESULTS} doc)
 string(JSON score GET "${doc}" score)

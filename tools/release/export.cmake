@@ -193,6 +193,10 @@ if(MODE STREQUAL "student")
   foreach(f CMakeLists.txt setup.sh .gitignore)
     copy_file(${S}/${f} ${f})
   endforeach()
+  # Pushed as a GitHub Classroom template repository, the release grades each
+  # push with its visible tests (github-classroom/, docs/instructors.md).
+  copy_file(${S}/tools/release/github-classroom/classroom.yml .github/workflows/classroom.yml)
+  copy_file(${S}/tools/release/github-classroom/grade.sh .github/classroom/grade.sh)
   file(READ ${S}/CMakePresets.json presets)
   without_presets_named(presets fuzz)
   file(WRITE ${OUT}/CMakePresets.json "${presets}\n")
@@ -215,7 +219,8 @@ if(MODE STREQUAL "student")
   # instructor's threat model, kit or Gradescope packaging.
   copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope|prairielearn)/" "^autograder/README\\.md$"
             "^autograder/(build_grader_image|grading_args)\\.sh$"
-            "^autograder/tests/(test_gradescope|test_prairielearn|test_report)\\.sh$" "^autograder/tests/browser/")
+            "^autograder/tests/(test_gradescope|test_prairielearn|test_report|test_leaderboard)\\.sh$"
+            "^autograder/tests/check_leaderboard\\.cmake$" "^autograder/tests/browser/")
   # The benchmark, without the ladder of traversals from the reference to Embree.
   copy_tree(tools/bench EXCLUDE "/ladder\\.(h|cpp)$")
   # The generator of the library's procedural scene (the library tests render
