@@ -302,10 +302,25 @@ int check_submission(const CheckOptions& opt) {
   Report report;
   report.hidden_not_run = hidden_not_run_in(source.string());
   Sandbox sandbox(opt.sandbox);
+  // A failing image test's images stay in the build folder, where its
+  // message names them (in a sandbox's own folder they would be gone).
+  int image_runs = 0;
+  const fs::path image_root = build / "image_test_failures";
+  ImageFolders kept_images{[&](std::string* error) {
+                             const fs::path dir = image_root / ("run-" + std::to_string(++image_runs));
+                             std::error_code ec;
+                             fs::remove_all(dir, ec);
+                             fs::create_directories(dir, ec);
+                             if (ec) *error = dir.string() + ": " + ec.message();
+                             return ec ? std::string() : dir.string();
+                           },
+                           [](const std::string&) {}, true};
+  std::error_code gone;
+  fs::remove_all(image_root, gone);  // only this check's images, none of an earlier one
   for (const auto& [part, tests] : manifest.parts) {
     if (auto it = binaries.find(part); it != binaries.end())
       report.parts.push_back(grade_binary(part, it->second, tests, opt.limits, sandbox, it->second + ".grade.log",
-                                          Redactor(), workers.count(part) ? workers.at(part) : ""));
+                                          Redactor(), workers.count(part) ? workers.at(part) : "", &kept_images));
     else
       report.parts.push_back(pending_part(part, tests, not_graded.count(part) ? not_graded[part] : "not built"));
   }

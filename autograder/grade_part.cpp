@@ -431,7 +431,7 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       if (t.status == TestResult::Status::Skipped) t.message = "skipped (a skipped test earns no points)";
       if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
       // Every process of the run is dead: nothing changes the folder now.
-      if (t.status == TestResult::Status::Failed && !image_folder.path.empty()) {
+      if (t.status == TestResult::Status::Failed && !image_folder.path.empty() && !images->kept) {
         std::string refused;
         if (tests_with_images < kMaxImageTestsPerPart)
           t.images = take_test_images(image_folder.path, t.test.name, &refused);

@@ -68,6 +68,9 @@ struct PartResult {
 struct ImageFolders {
   std::function<std::string(std::string* error)> fresh;
   std::function<void(const std::string&)> discard;
+  // The student's own check (check-submission) keeps the folders where its
+  // messages name them, instead of taking the images into a report.
+  bool kept = false;
 };
 
 // A part before it is graded: every test 0 of its points, with `why`.

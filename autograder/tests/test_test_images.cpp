@@ -213,5 +213,34 @@ TEST_F(TestImages, GradeBinaryTakesTheImagesOfFailingTests) {
   EXPECT_NE(notes.find("the images of 2 more failing test(s) were not kept"), std::string::npos) << notes;
 }
 
+
+// The student's own check (check-submission) keeps the folder: no image is
+// taken into the result, each message still names its folder, and the files
+// are there to open.
+TEST_F(TestImages, KeptFoldersStayWhereTheMessagesNameThem) {
+  PartManifest tests;
+  for (int k = 0; k < 6; ++k) tests.push_back({"ImageP9.T" + std::to_string(k), "P9T1", 1, false, false});
+  SandboxOptions options;
+  options.confine = false;
+  Sandbox sandbox(options);
+  std::vector<std::string> made;
+  const ImageFolders folders{[&](std::string*) {
+                               const fs::path d = root / ("kept-" + std::to_string(made.size() + 1));
+                               fs::create_directory(d);
+                               made.push_back(d.string());
+                               return d.string();
+                             },
+                             [](const std::string&) {}, true};
+  const PartResult r =
+      grade_binary(9, PT_FAILING_IMAGE_TESTS, tests, GradeLimits(), sandbox, "", Redactor(), "", &folders);
+  ASSERT_EQ(r.tests.size(), 6u);
+  ASSERT_EQ(made.size(), 1u);
+  for (const TestResult& t : r.tests) {
+    EXPECT_TRUE(t.images.empty()) << t.test.name;
+    EXPECT_NE(t.message.find(made[0] + "/" + t.test.name + "/"), std::string::npos) << t.message;
+  }
+  EXPECT_TRUE(fs::exists(fs::path(made[0]) / "ImageP9.T1" / "render.png"));
+}
+
 }  // namespace
 }  // namespace pt::grade
