@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "boundary/one_cpu.h"
+#include "boundary/verifier_exit_codes.h"
 #include "report_text.h"
 #include "verdicts.h"
 
@@ -117,10 +118,6 @@ RunOutcome not_run(const std::string& why) {
   r.exit.error = why;
   return r;
 }
-
-// The verifier's exit status when its worker is gone, and when it never
-// reached its main (boundary/verifier_link.h).
-constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88, kWorkerBrokeLink = 89;
 
 // The worker's run ends a second after its verifier's (the grader closes the
 // write end of `verifier_done`), or sooner, by itself: a worker that has
@@ -353,9 +350,9 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     const RunOutcome run =
         worker.empty() ? sandbox.run(request, watch) : run_with_worker(sandbox, request, watch, worker, worker_run);
     const bool worker_exit = !worker.empty() && run.exit.how == Exit::How::Exited;
-    const bool worker_lost = worker_exit && run.exit.code == kWorkerLost;
-    const bool worker_never_started = worker_exit && run.exit.code == kWorkerNeverStarted;
-    const bool worker_broke_link = worker_exit && run.exit.code == kWorkerBrokeLink;
+    const bool worker_lost = worker_exit && run.exit.code == boundary::kWorkerLost;
+    const bool worker_never_started = worker_exit && run.exit.code == boundary::kWorkerNeverStarted;
+    const bool worker_broke_link = worker_exit && run.exit.code == boundary::kWorkerBrokeLink;
     ++res.runs;
     output_bytes += run.output_bytes;
     if (log) {
