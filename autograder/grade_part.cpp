@@ -23,6 +23,7 @@
 #include "boundary/one_cpu.h"
 #include "boundary/verifier_exit_codes.h"
 #include "report_text.h"
+#include "run_outcome.h"
 #include "verdicts.h"
 
 namespace pt::grade {
@@ -139,50 +140,6 @@ class WorkerWatch : public RunObserver {
   int verifier_done_;
   mutable Clock::time_point ends_ = Clock::time_point::max();
 };
-
-// A worker's RunOutcome, from the helper process that ran it.
-void write_outcome(int fd, const RunOutcome& r) {
-  std::ostringstream out;
-  auto text = [&out](const std::string& s) { out << s.size() << ' ' << s; };
-  out << static_cast<int>(r.exit.how) << ' ' << r.exit.code << ' ' << r.exit.seconds << ' ' << r.exit.limit << ' '
-      << r.output_bytes << ' ';
-  text(r.exit.error);
-  text(r.output);
-  const std::string bytes = out.str();
-  for (size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n <= 0 && errno != EINTR) return;
-    if (n > 0) done += static_cast<size_t>(n);
-  }
-}
-
-RunOutcome read_outcome(int fd) {
-  std::string bytes;
-  char chunk[1 << 16];
-  for (ssize_t n; (n = ::read(fd, chunk, sizeof chunk)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    bytes.append(chunk, static_cast<size_t>(n));
-  }
-  RunOutcome r;
-  std::istringstream in(bytes);
-  auto text = [&in](std::string& s) {
-    size_t n = 0;
-    if (!(in >> n) || in.get() != ' ' || n > (64u << 20)) return false;
-    s.resize(n);
-    return static_cast<bool>(in.read(s.data(), static_cast<std::streamsize>(n)));
-  };
-  int how = 0;
-  if (!(in >> how >> r.exit.code >> r.exit.seconds >> r.exit.limit >> r.output_bytes) || in.get() != ' ' ||
-      !text(r.exit.error) || !text(r.output)) {
-    r = RunOutcome();
-    r.exit.how = Exit::How::Lost;
-    r.exit.error = "the grader's helper that ran the worker ended without saying how the worker ended";
-    return r;
-  }
-  r.exit.how = static_cast<Exit::How>(how);
-  return r;
-}
 
 // One run of a verifier with its worker beside it, each in its own sandbox
 // run (its own PID namespace where there are namespaces): the worker can
