@@ -9,8 +9,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -217,33 +219,34 @@ void scrub_gtest_environment() {
   for (const auto& n : names) ::unsetenv(n.c_str());
 }
 
-}  // namespace
+// A subcommand, and what it does once the command line is parsed.
+struct Command {
+  CLI::App* cmd;
+  std::function<int()> action;
+};
 
-int main(int argc, char** argv) {
-  CLI::App app{"pt-grade: scores the graded test binaries; checks the stubs and the mutants", "pt-grade"};
-  app.require_subcommand(1);
-  app.footer(
-      "Each binary's output goes to BINARY.grade.log. Time limits: --test-timeout per test, --part-budget per part,\n"
-      "--budget for all parts (defaults below). The sandbox's layers: pt-grade sandbox.\n"
-      "Exit status: 0 graded (whatever the score) or check passed, 1 check failed, 2 could not grade.");
+// The options the grading subcommands share, and how each adds them.
+struct Common {
   Options opt;
-  opt.sandbox.readable = {build_paths::grade_readable()};
-  const CLI::Validator seconds(
-      [](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        return *end == '\0' && v > 0 && v <= 1e6 ? "" : "expected a number of seconds in (0, 1e6], got " + text;
-      },
-      "");
-  auto add_sandbox_choice = [&](CLI::App* cmd) {
+  CLI::Validator seconds{[](std::string& text) -> std::string {
+                           char* end = nullptr;
+                           const double v = std::strtod(text.c_str(), &end);
+                           return *end == '\0' && v > 0 && v <= 1e6
+                                      ? ""
+                                      : "expected a number of seconds in (0, 1e6], got " + text;
+                         },
+                         ""};
+
+  void add_sandbox_choice(CLI::App* cmd) {
     cmd->add_option("--sandbox-without", opt.sandbox.without, "leave out these layers, to test the fallbacks")
         ->delimiter(',')
         ->check(CLI::IsMember({"namespaces", "user", "landlock", "seccomp"}))
         ->type_name("LAYER,...");
-    cmd->add_flag("--no-sandbox", [&](std::int64_t) { opt.sandbox.confine = false; },
+    cmd->add_flag("--no-sandbox", [this](std::int64_t) { opt.sandbox.confine = false; },
                   "run the code under test with only its limits, session and subreaper (debugging only)");
-  };
-  auto add_grading = [&](CLI::App* cmd) {
+  }
+
+  void add_grading(CLI::App* cmd) {
     cmd->add_option("--manifest", opt.manifest, "the trusted list of graded tests (pt-grade manifest)")
         ->type_name("FILE")
         ->check(CLI::ExistingFile);
@@ -266,122 +269,179 @@ int main(int argc, char** argv) {
         ->type_name("N")
         ->capture_default_str();
     add_sandbox_choice(cmd);
-  };
+  }
+};
 
-  std::string build_dir = "build", json_path;
-  std::vector<int> parts{1, 2, 3, 4, 5};
-  std::vector<std::string> binary_args;
-  bool show_hidden = false;
-  CLI::App* run_cmd = app.add_subcommand("run", "grade DIR/tests/partN_tests of each part (the default)");
-  run_cmd->add_option("--build-dir", build_dir, "build directory")->type_name("DIR")->capture_default_str();
-  run_cmd->add_option("--parts", parts, "parts to grade")->delimiter(',')->type_name("N,...")->capture_default_str();
-  run_cmd->add_option("--binary", binary_args, "grade FILE as part N instead of DIR/tests/partN_tests")
+Command add_run(CLI::App& app, Common& c) {
+  struct Args {
+    std::string build_dir = "build", json_path;
+    std::vector<int> parts{1, 2, 3, 4, 5};
+    std::vector<std::string> binaries, workers;
+    bool show_hidden = false;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("run", "grade DIR/tests/partN_tests of each part (the default)");
+  cmd->add_option("--build-dir", a->build_dir, "build directory")->type_name("DIR")->capture_default_str();
+  cmd->add_option("--parts", a->parts, "parts to grade")->delimiter(',')->type_name("N,...")->capture_default_str();
+  cmd->add_option("--binary", a->binaries, "grade FILE as part N instead of DIR/tests/partN_tests")->type_name("N=FILE");
+  cmd->add_option("--worker", a->workers,
+                  "part N's task code runs in FILE, a worker; its binary is then the part's verifier "
+                  "(autograder/boundary/README.md)")
       ->type_name("N=FILE");
-  std::vector<std::string> worker_args;
-  run_cmd->add_option("--worker", worker_args,
-                      "part N's task code runs in FILE, a worker; its binary is then the part's verifier "
-                      "(autograder/boundary/README.md)")
-      ->type_name("N=FILE");
-  add_grading(run_cmd);
-  run_cmd->add_flag("--count-extensions", opt.count_extensions,
-                    "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
-  run_cmd->add_option("--budget", opt.submission_seconds, "time allowed to all parts together")
-      ->check(seconds)
+  c.add_grading(cmd);
+  cmd->add_flag("--count-extensions", c.opt.count_extensions,
+                "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
+  cmd->add_option("--budget", c.opt.submission_seconds, "time allowed to all parts together")
+      ->check(c.seconds)
       ->type_name("SECONDS")
       ->capture_default_str();
-  run_cmd->add_option("--json", json_path, "write a Gradescope results.json")->type_name("FILE");
-  run_cmd->add_flag("--hidden", show_hidden, "show the names and failures of hidden tests too");
+  cmd->add_option("--json", a->json_path, "write a Gradescope results.json")->type_name("FILE");
+  cmd->add_flag("--hidden", a->show_hidden, "show the names and failures of hidden tests too");
+  return {cmd, [a, &c] {
+    const std::map<int, std::string> binaries = numbered_files(a->binaries, "--binary");
+    c.opt.workers = numbered_files(a->workers, "--worker");
+    return run(a->build_dir, a->parts, binaries, c.opt, a->json_path, a->show_hidden);
+  }};
+}
 
-  int part = 0;
-  std::string binary;
-  CLI::App* stubs_cmd = app.add_subcommand("check-stubs", "every graded test must fail naming a task of the part");
-  stubs_cmd->add_option("--part", part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
-  stubs_cmd->add_option("BINARY", binary, "test binary built from the untouched stubs")
-      ->required()
-      ->check(CLI::ExistingFile);
-  std::string worker;
-  stubs_cmd->add_option("--worker", worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
-  add_grading(stubs_cmd);
+// check-stubs and check-mutant: one part's binary, graded, then judged.
+Command add_check(CLI::App& app, Common& c, const char* name, const char* what, const char* binary_is,
+                  int (*judge)(const PartResult&), bool can_fail_fast) {
+  struct Args {
+    int part = 0;
+    std::string binary, worker, cheap_first;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(name, what);
+  cmd->add_option("--part", a->part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
+  cmd->add_option("BINARY", a->binary, binary_is)->required()->check(CLI::ExistingFile);
+  cmd->add_option("--worker", a->worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
+  c.add_grading(cmd);
+  if (can_fail_fast) {
+    cmd->add_flag("--fail-fast", c.opt.limits.stop_at_first_failure, "stop at the first failing test");
+    cmd->add_option("--cheap-first", a->cheap_first,
+                    "with --fail-fast: run the tests that took least time in this results.json first "
+                    "(the reference's; a missing file changes nothing)")
+        ->type_name("FILE");
+  }
+  return {cmd, [a, &c, judge] {
+    if (!a->worker.empty()) c.opt.workers[a->part] = a->worker;
+    if (!a->cheap_first.empty()) c.opt.limits.cheap_first = test_seconds_from_results(a->cheap_first);
+    return judge(grade_one(a->part, a->binary, c.opt));
+  }};
+}
 
-  CLI::App* mutant_cmd = app.add_subcommand("check-mutant", "at least one graded test must fail");
-  mutant_cmd->add_option("--part", part, "the part the binary tests")->required()->check(CLI::Range(1, 99))->type_name("N");
-  mutant_cmd->add_option("BINARY", binary, "test binary built with a mutant")->required()->check(CLI::ExistingFile);
-  mutant_cmd->add_option("--worker", worker, "the part's worker: BINARY is then its verifier")->check(CLI::ExistingFile);
-  add_grading(mutant_cmd);
-  mutant_cmd->add_flag("--fail-fast", opt.limits.stop_at_first_failure, "stop at the first failing test");
-  std::string cheap_first;
-  mutant_cmd->add_option("--cheap-first", cheap_first,
-                         "with --fail-fast: run the tests that took least time in this results.json first "
-                         "(the reference's; a missing file changes nothing)")
-      ->type_name("FILE");
-
-  std::string manifest_out;
-  std::vector<std::string> listed, solution_files;
-  CLI::App* manifest_cmd =
-      app.add_subcommand("manifest", "write the manifest from trusted (all-reference) test binaries");
-  manifest_cmd->add_option("--out", manifest_out, "the manifest to write")->required()->type_name("FILE");
-  manifest_cmd->add_option("BINARIES", listed, "each part's all-reference test binary")->required()->type_name("N=FILE");
-  manifest_cmd->add_option("--solution", solution_files, "files whose lines must never reach a report")
+Command add_manifest(CLI::App& app) {
+  struct Args {
+    std::string out;
+    std::vector<std::string> listed, solution_files;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("manifest", "write the manifest from trusted (all-reference) test binaries");
+  cmd->add_option("--out", a->out, "the manifest to write")->required()->type_name("FILE");
+  cmd->add_option("BINARIES", a->listed, "each part's all-reference test binary")->required()->type_name("N=FILE");
+  cmd->add_option("--solution", a->solution_files, "files whose lines must never reach a report")
       ->type_name("FILE...")
       ->check(CLI::ExistingFile);
+  return {cmd, [a] { return write_manifest_from(a->out, a->listed, a->solution_files); }};
+}
 
-  SubmissionOptions sub;
-  sub.kit = build_paths::default_kit();
+Command add_submission(CLI::App& app, Common& c) {
+  auto sub = std::make_shared<SubmissionOptions>();
+  sub->kit = build_paths::default_kit();
   {
     // A kit's own copy of pt-grade (KIT/bin/pt-grade) grades with that kit.
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec && fs::is_regular_file(exe.parent_path().parent_path() / "manifest.json"))
-      sub.kit = exe.parent_path().parent_path().string();
+      sub->kit = exe.parent_path().parent_path().string();
   }
-  CLI::App* submission_cmd = app.add_subcommand(
+  CLI::App* cmd = app.add_subcommand(
       "submission", "build and grade a submission (a folder or .zip of tasks/partN_*.cpp) in the grading kit");
-  submission_cmd->add_option("PATH", sub.path, "the submission: a folder or a .zip")->required();
-  submission_cmd->add_option("--kit", sub.kit, "the grading kit (target grader-kit)")->type_name("DIR")->capture_default_str();
-  submission_cmd->add_option("--json", sub.json_path, "write a Gradescope results.json")->type_name("FILE");
-  submission_cmd->add_option("--html", sub.html_path, "write the report a person reads")->type_name("FILE");
-  submission_cmd->add_option("--prairielearn", sub.prairielearn_path, "write PrairieLearn's results.json")->type_name("FILE");
-  submission_cmd->add_option("--work", sub.work, "folder for the build tree (default: TMPDIR)")->type_name("DIR");
-  submission_cmd->add_flag("--keep-work", sub.keep_work, "keep the build tree");
-  submission_cmd->add_flag("--no-renders", [&](std::int64_t) { sub.renders = false; }, "no renders in the report");
-  submission_cmd->add_option("--render-seconds", sub.render_seconds, "time for the report's builds and renders together")
+  cmd->add_option("PATH", sub->path, "the submission: a folder or a .zip")->required();
+  cmd->add_option("--kit", sub->kit, "the grading kit (target grader-kit)")->type_name("DIR")->capture_default_str();
+  cmd->add_option("--json", sub->json_path, "write a Gradescope results.json")->type_name("FILE");
+  cmd->add_option("--html", sub->html_path, "write the report a person reads")->type_name("FILE");
+  cmd->add_option("--prairielearn", sub->prairielearn_path, "write PrairieLearn's results.json")->type_name("FILE");
+  cmd->add_option("--work", sub->work, "folder for the build tree (default: TMPDIR)")->type_name("DIR");
+  cmd->add_flag("--keep-work", sub->keep_work, "keep the build tree");
+  cmd->add_flag("--no-renders", [sub](std::int64_t) { sub->renders = false; }, "no renders in the report");
+  cmd->add_option("--render-seconds", sub->render_seconds, "time for the report's builds and renders together")
       ->check(CLI::Range(5.0, 3600.0));
-  submission_cmd->add_option("--build-timeout", sub.build_seconds, "time allowed to build one part")
-      ->check(seconds)
+  cmd->add_option("--build-timeout", sub->build_seconds, "time allowed to build one part")
+      ->check(c.seconds)
       ->type_name("SECONDS")
       ->capture_default_str();
-  submission_cmd->add_option("--budget", sub.budget_seconds, "time allowed to the whole submission")
-      ->check(seconds)
+  cmd->add_option("--budget", sub->budget_seconds, "time allowed to the whole submission")
+      ->check(c.seconds)
       ->type_name("SECONDS")
       ->capture_default_str();
-  add_grading(submission_cmd);
-  submission_cmd->add_flag("--count-extensions", sub.count_extensions,
-                           "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
-  submission_cmd->add_flag("--leaderboard", sub.leaderboard,
-                           "add Gradescope's leaderboard: Part 2's SAH cost against the solution's, primitive tests "
-                           "and node visits per ray (autograder/leaderboard.h)");
+  c.add_grading(cmd);
+  cmd->add_flag("--count-extensions", sub->count_extensions,
+                "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
+  cmd->add_flag("--leaderboard", sub->leaderboard,
+                "add Gradescope's leaderboard: Part 2's SAH cost against the solution's, primitive tests and node "
+                "visits per ray (autograder/leaderboard.h)");
+  return {cmd, [sub, &c] {
+    sub->limits = c.opt.limits;
+    sub->sandbox = c.opt.sandbox;
+    return grade_submission(*sub);
+  }};
+}
 
-  CheckOptions check;
-  check.source_dir = build_paths::source_root();
-  check.build_dir = build_paths::binary_root();
-  check.tasks = (fs::path(check.source_dir) / "tasks").string();
-  CLI::App* check_cmd = app.add_subcommand(
+Command add_check_submission(CLI::App& app, Common& c) {
+  auto check = std::make_shared<CheckOptions>();
+  check->source_dir = build_paths::source_root();
+  check->build_dir = build_paths::binary_root();
+  check->tasks = (fs::path(check->source_dir) / "tasks").string();
+  CLI::App* cmd = app.add_subcommand(
       "check-submission",
       "in the student release: what the grader will do with your task files (intake, includes, edited framework "
       "files, each part built alone, the visible tests, the hidden points not run)");
-  check_cmd->add_option("TASKS", check.tasks, "the folder or .zip you will submit")->capture_default_str();
-  check_cmd->add_option("--build-dir", check.build_dir, "the release's build folder")->type_name("DIR")->capture_default_str();
-  check_cmd->add_option("--format", check.format,
-                        "github-classroom: only the result for GitHub Classroom's reporter on stdout (JSON), the rest "
-                        "on stderr")
+  cmd->add_option("TASKS", check->tasks, "the folder or .zip you will submit")->capture_default_str();
+  cmd->add_option("--build-dir", check->build_dir, "the release's build folder")->type_name("DIR")->capture_default_str();
+  cmd->add_option("--format", check->format,
+                  "github-classroom: only the result for GitHub Classroom's reporter on stdout (JSON), the rest on "
+                  "stderr")
       ->check(CLI::IsMember({"text", "github-classroom"}))
       ->capture_default_str();
-  add_grading(check_cmd);
+  c.add_grading(cmd);
+  return {cmd, [check, &c] {
+    check->limits = c.opt.limits;
+    check->sandbox = c.opt.sandbox;
+    return check_submission(*check);
+  }};
+}
 
-  CLI::App* sandbox_cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
-  sandbox_cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
+Command add_sandbox(CLI::App& app, Common& c) {
+  CLI::App* cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
+  cmd->add_option("--sandbox-user", c.opt.sandbox.user, "who runs the code under test when pt-grade is root")
       ->type_name("USER");
-  add_sandbox_choice(sandbox_cmd);
+  c.add_sandbox_choice(cmd);
+  return {cmd, [&c] { return print_sandbox(c.opt.sandbox); }};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"pt-grade: scores the graded test binaries; checks the stubs and the mutants", "pt-grade"};
+  app.require_subcommand(1);
+  app.footer(
+      "Each binary's output goes to BINARY.grade.log. Time limits: --test-timeout per test, --part-budget per part,\n"
+      "--budget for all parts (defaults below). The sandbox's layers: pt-grade sandbox.\n"
+      "Exit status: 0 graded (whatever the score) or check passed, 1 check failed, 2 could not grade.");
+  Common common;
+  common.opt.sandbox.readable = {build_paths::grade_readable()};
+  const std::vector<Command> commands{
+      add_run(app, common),
+      add_check(app, common, "check-stubs", "every graded test must fail naming a task of the part",
+                "test binary built from the untouched stubs", check_stubs, false),
+      add_check(app, common, "check-mutant", "at least one graded test must fail", "test binary built with a mutant",
+                check_mutant, true),
+      add_manifest(app),
+      add_submission(app, common),
+      add_check_submission(app, common),
+      add_sandbox(app, common)};
 
   // `run` is the default: insert it when the first argument is an option.
   std::vector<char*> args(argv, argv + argc);
@@ -397,27 +457,9 @@ int main(int argc, char** argv) {
   scrub_gtest_environment();
   hide_command_line(argc, argv, "pt-grade");
   try {
-    if (!worker.empty()) opt.workers[part] = worker;
-    if (*stubs_cmd) return check_stubs(grade_one(part, binary, opt));
-    if (*mutant_cmd) {
-      opt.limits.cheap_first = test_seconds_from_results(cheap_first);
-      return check_mutant(grade_one(part, binary, opt));
-    }
-    if (*manifest_cmd) return write_manifest_from(manifest_out, listed, solution_files);
-    if (*sandbox_cmd) return print_sandbox(opt.sandbox);
-    if (*check_cmd) {
-      check.limits = opt.limits;
-      check.sandbox = opt.sandbox;
-      return check_submission(check);
-    }
-    if (*submission_cmd) {
-      sub.limits = opt.limits;
-      sub.sandbox = opt.sandbox;
-      return grade_submission(sub);
-    }
-    const std::map<int, std::string> binaries = numbered_files(binary_args, "--binary");
-    opt.workers = numbered_files(worker_args, "--worker");
-    return run(build_dir, parts, binaries, opt, json_path, show_hidden);
+    for (const Command& c : commands)
+      if (*c.cmd) return c.action();
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pt-grade: %s\n", e.what());
     return 2;

@@ -21,7 +21,9 @@
 #include <sstream>
 
 #include "boundary/one_cpu.h"
+#include "boundary/verifier_exit_codes.h"
 #include "report_text.h"
+#include "run_outcome.h"
 #include "verdicts.h"
 
 namespace pt::grade {
@@ -128,10 +130,6 @@ RunOutcome not_run(const std::string& why) {
   return r;
 }
 
-// The verifier's exit status when its worker is gone, and when it never
-// reached its main (boundary/verifier_link.h).
-constexpr int kWorkerLost = 87, kWorkerNeverStarted = 88, kWorkerBrokeLink = 89;
-
 // The worker's run ends a second after its verifier's (the grader closes the
 // write end of `verifier_done`), or sooner, by itself: a worker that has
 // already died is seen dead, not stopped, and one still running reads the end
@@ -152,50 +150,6 @@ class WorkerWatch : public RunObserver {
   int verifier_done_;
   mutable Clock::time_point ends_ = Clock::time_point::max();
 };
-
-// A worker's RunOutcome, from the helper process that ran it.
-void write_outcome(int fd, const RunOutcome& r) {
-  std::ostringstream out;
-  auto text = [&out](const std::string& s) { out << s.size() << ' ' << s; };
-  out << static_cast<int>(r.exit.how) << ' ' << r.exit.code << ' ' << r.exit.seconds << ' ' << r.exit.limit << ' '
-      << r.output_bytes << ' ';
-  text(r.exit.error);
-  text(r.output);
-  const std::string bytes = out.str();
-  for (size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n <= 0 && errno != EINTR) return;
-    if (n > 0) done += static_cast<size_t>(n);
-  }
-}
-
-RunOutcome read_outcome(int fd) {
-  std::string bytes;
-  char chunk[1 << 16];
-  for (ssize_t n; (n = ::read(fd, chunk, sizeof chunk)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    bytes.append(chunk, static_cast<size_t>(n));
-  }
-  RunOutcome r;
-  std::istringstream in(bytes);
-  auto text = [&in](std::string& s) {
-    size_t n = 0;
-    if (!(in >> n) || in.get() != ' ' || n > (64u << 20)) return false;
-    s.resize(n);
-    return static_cast<bool>(in.read(s.data(), static_cast<std::streamsize>(n)));
-  };
-  int how = 0;
-  if (!(in >> how >> r.exit.code >> r.exit.seconds >> r.exit.limit >> r.output_bytes) || in.get() != ' ' ||
-      !text(r.exit.error) || !text(r.output)) {
-    r = RunOutcome();
-    r.exit.how = Exit::How::Lost;
-    r.exit.error = "the grader's helper that ran the worker ended without saying how the worker ended";
-    return r;
-  }
-  r.exit.how = static_cast<Exit::How>(how);
-  return r;
-}
 
 }  // namespace
 
@@ -396,9 +350,9 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
     const RunOutcome run =
         worker.empty() ? sandbox.run(request, watch) : run_with_worker(sandbox, request, watch, worker, worker_run);
     const bool worker_exit = !worker.empty() && run.exit.how == Exit::How::Exited;
-    const bool worker_lost = worker_exit && run.exit.code == kWorkerLost;
-    const bool worker_never_started = worker_exit && run.exit.code == kWorkerNeverStarted;
-    const bool worker_broke_link = worker_exit && run.exit.code == kWorkerBrokeLink;
+    const bool worker_lost = worker_exit && run.exit.code == boundary::kWorkerLost;
+    const bool worker_never_started = worker_exit && run.exit.code == boundary::kWorkerNeverStarted;
+    const bool worker_broke_link = worker_exit && run.exit.code == boundary::kWorkerBrokeLink;
     ++res.runs;
     output_bytes += run.output_bytes;
     if (log) {

@@ -63,12 +63,6 @@ json to_json(const ManifestTest& t) {
 
 }  // namespace
 
-double max_score(const PartManifest& tests) {
-  double sum = 0;
-  for (const auto& t : tests) sum += t.points;
-  return sum;
-}
-
 int leave_extensions_uncounted(Manifest& manifest) {
   int n = 0;
   for (auto& [part, tests] : manifest.parts)

@@ -28,8 +28,6 @@ struct Manifest {
   std::set<uint64_t> solution_lines;  // fingerprints of the solution's lines (redact.h)
 };
 
-double max_score(const PartManifest& tests);
-
 // Parses what `BINARY --pt_list_graded` prints (one JSON object per line) as
 // the tests of `part`; throws std::runtime_error naming the offending line.
 PartManifest parse_listing(int part, const std::string& text);

@@ -486,11 +486,6 @@ void Sandbox::probe() {
   if (!p.nproc && !p.seccomp) missing_.push_back("process limit: nothing stops a fork bomb but the time limits");
 }
 
-bool Sandbox::has(std::string_view id) const {
-  const auto ids = layer_ids();
-  return std::find(ids.begin(), ids.end(), id) != ids.end();
-}
-
 std::vector<std::string> Sandbox::layer_ids() const {
   const Plan& p = *plan_;
   if (!options_.confine) return {};

@@ -104,8 +104,7 @@ class Sandbox {
 
   const std::vector<std::string>& layers() const { return active_; }  // e.g. "PID namespace"
   const std::vector<std::string>& layers_missing() const { return missing_; }
-  bool has(std::string_view layer_id) const;  // by id: pid-ns, user, landlock, seccomp, no-fork, ...
-  std::vector<std::string> layer_ids() const;
+  std::vector<std::string> layer_ids() const;  // pid-ns, user, landlock, seccomp, no-fork, ...
 
  private:
   struct Plan;

@@ -14,19 +14,10 @@
 
 #include "render/pathtracer.h"
 #include "scene_codec.h"
+#include "verifier_exit_codes.h"
 #include "wire.h"
 
 namespace pt::boundary {
-
-// The verifier's exit status when the worker died or broke the link: the test
-// that was running gets no verdict, and pt-grade charges it with the worker's
-// end and starts both again on the tests left.
-constexpr int kWorkerLost = 87;
-// ... and when it never reached its main (a static initializer): it would
-// do the same for every test, so pt-grade charges them all at once.
-constexpr int kWorkerNeverStarted = 88;
-// ... and when it wrote what no honest worker writes on the link.
-constexpr int kWorkerBrokeLink = 89;
 
 // Calls the worker (one call at a time, from any thread). A broken link ends
 // this process with kWorkerLost after saying why on stderr.
