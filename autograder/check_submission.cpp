@@ -309,7 +309,6 @@ int check_submission(const CheckOptions& opt) {
   ImageFolders kept_images{[&](std::string* error) {
                              const fs::path dir = image_root / ("run-" + std::to_string(++image_runs));
                              std::error_code ec;
-                             fs::remove_all(dir, ec);
                              fs::create_directories(dir, ec);
                              if (ec) *error = dir.string() + ": " + ec.message();
                              return ec ? std::string() : dir.string();

@@ -63,6 +63,18 @@ class TestImages : public ::testing::Test {
     png = png_bytes(root, 256, 192);
   }
   void TearDown() override { fs::remove_all(root); }
+
+  // grade_binary on the helper binary whose six image tests all fail, each
+  // writing its images into the folders `folders` makes.
+  PartResult grade_failing_image_tests(const ImageFolders& folders) {
+    PartManifest tests;
+    for (int k = 0; k < 6; ++k) tests.push_back({"ImageP9.T" + std::to_string(k), "P9T1", 1, false, false});
+    SandboxOptions options;
+    options.confine = false;
+    Sandbox sandbox(options);
+    return grade_binary(9, PT_FAILING_IMAGE_TESTS, tests, GradeLimits(), sandbox, "", Redactor(), "", &folders);
+  }
+
   fs::path root;
   std::string png;
 };
@@ -173,11 +185,6 @@ TEST_F(TestImages, ThePageBoundsThemAndResultsJsonHasNone) {
 // every message names the report or says the images were not kept, never
 // the folder.
 TEST_F(TestImages, GradeBinaryTakesTheImagesOfFailingTests) {
-  PartManifest tests;
-  for (int k = 0; k < 6; ++k) tests.push_back({"ImageP9.T" + std::to_string(k), "P9T1", 1, false, false});
-  SandboxOptions options;
-  options.confine = false;
-  Sandbox sandbox(options);
   std::vector<std::string> made, discarded;
   const ImageFolders folders{[&](std::string*) {
                                const fs::path d = root / ("run-" + std::to_string(made.size() + 1));
@@ -189,8 +196,7 @@ TEST_F(TestImages, GradeBinaryTakesTheImagesOfFailingTests) {
                                discarded.push_back(d);
                                fs::remove_all(d);
                              }};
-  const PartResult r =
-      grade_binary(9, PT_FAILING_IMAGE_TESTS, tests, GradeLimits(), sandbox, "", Redactor(), "", &folders);
+  const PartResult r = grade_failing_image_tests(folders);
   ASSERT_EQ(r.tests.size(), 6u);
   ASSERT_EQ(made.size(), 1u);
   EXPECT_EQ(discarded, made);
@@ -218,11 +224,6 @@ TEST_F(TestImages, GradeBinaryTakesTheImagesOfFailingTests) {
 // taken into the result, each message still names its folder, and the files
 // are there to open.
 TEST_F(TestImages, KeptFoldersStayWhereTheMessagesNameThem) {
-  PartManifest tests;
-  for (int k = 0; k < 6; ++k) tests.push_back({"ImageP9.T" + std::to_string(k), "P9T1", 1, false, false});
-  SandboxOptions options;
-  options.confine = false;
-  Sandbox sandbox(options);
   std::vector<std::string> made;
   const ImageFolders folders{[&](std::string*) {
                                const fs::path d = root / ("kept-" + std::to_string(made.size() + 1));
@@ -231,8 +232,7 @@ TEST_F(TestImages, KeptFoldersStayWhereTheMessagesNameThem) {
                                return d.string();
                              },
                              [](const std::string&) {}, true};
-  const PartResult r =
-      grade_binary(9, PT_FAILING_IMAGE_TESTS, tests, GradeLimits(), sandbox, "", Redactor(), "", &folders);
+  const PartResult r = grade_failing_image_tests(folders);
   ASSERT_EQ(r.tests.size(), 6u);
   ASSERT_EQ(made.size(), 1u);
   for (const TestResult& t : r.tests) {
