@@ -22,6 +22,22 @@ if(NOT DEFINED PT_THIRD_PARTY)  # the instructor's build of the libc++ solution 
   set(PT_THIRD_PARTY ${CMAKE_SOURCE_DIR}/third_party)
 endif()
 
+# The grader (pt-grade: its score, check-submission, sandbox and process
+# boundary; autograder/) is built on the Linux process interfaces it confines
+# code with (namespaces, seccomp, Landlock, prctl, /proc). Elsewhere (macOS)
+# the build leaves it out and says what to use instead: the framework, the
+# renderers and every partN_tests build everywhere.
+if(CMAKE_SYSTEM_NAME STREQUAL "Linux")
+  option(PT_GRADER "Build the grader pt-grade and the process boundary (Linux only)" ON)
+else()
+  set(PT_GRADER OFF)
+endif()
+if(NOT PT_GRADER AND NOT PT_PREBUILT_ONLY)  # PT_PREBUILT_ONLY: tools/release/prebuilt/
+  message(WARNING "No grader in this build (it needs Linux): ./build/tests/partN_tests runs each part's visible tests, "
+                  "but pt-grade (your score, check-submission before you submit) is not built. Check your submission "
+                  "in WSL, the dev container (.devcontainer/) or your course's GitHub Classroom run (README.md).")
+endif()
+
 include(CheckCXXSourceCompiles)
 check_cxx_source_compiles("#include <cstddef>\n#ifndef _LIBCPP_VERSION\n#error libstdc++\n#endif\nint main() { return 0; }"
                           PT_LIBCXX)

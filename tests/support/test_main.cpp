@@ -92,7 +92,9 @@ void take_channel(int argc, char** argv, char**) {
   }
 }
 
+#ifdef __ELF__
 __attribute__((section(".preinit_array"), used)) void (*const g_take_channel)(int, char**, char**) = take_channel;
+#endif  // elsewhere (macOS) main() takes it: no grader runs there (pt-grade is Linux only)
 
 void write_all(int fd, const std::string& text) {
   size_t done = 0;
@@ -302,6 +304,9 @@ class GradingListener : public testing::EmptyTestEventListener {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifndef __ELF__
+  take_channel(argc, argv, nullptr);
+#endif
   const int threads = running_threads();
   testing::InitGoogleTest(&argc, argv);
   double test_timeout = 20;

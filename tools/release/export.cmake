@@ -191,7 +191,7 @@ endmacro()
 
 if(MODE STREQUAL "student")
   copy_file(${S}/tools/release/README.student.md README.md)
-  foreach(f CMakeLists.txt setup.sh .gitignore cmake/dependencies.cmake)
+  foreach(f CMakeLists.txt setup.sh .gitignore cmake/dependencies.cmake .devcontainer/devcontainer.json)
     copy_file(${S}/${f} ${f})
   endforeach()
   # The third-party code a build uses where the system has none
