@@ -1,6 +1,7 @@
 #include "io/decimal_text.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -60,7 +61,9 @@ std::from_chars_result read_decimal(const char* first, const char* last, double&
   const std::string text(first, end);  // strtod needs a terminated string
   errno = 0;
   const double v = std::strtod(text.c_str(), nullptr);
-  if (errno == ERANGE) return {end, std::errc::result_out_of_range};
+  // strtod reports ERANGE for a subnormal result too, which from_chars reads
+  // as a value: out of range only when nothing of it is left (0) or too much (inf).
+  if (errno == ERANGE && (v == 0.0 || std::isinf(v))) return {end, std::errc::result_out_of_range};
   value = v;
   return {end, std::errc()};
 }
