@@ -74,7 +74,7 @@ function(pt_shipped target folder)
                         "release, which ships it in third_party/")
   endif()
   add_library(${target} INTERFACE IMPORTED GLOBAL)
-  set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${dir};${ARGN}")
+  set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${dir})
   set(PT_SHIPPED_USED ${PT_SHIPPED_USED} ${folder} PARENT_SCOPE)
 endfunction()
 
