@@ -16,8 +16,8 @@
 #  5. the reference's task files as a student's: every partN_tests passes;
 #  6. the same tree with no libraries for its platform (the libc++ folder
 #     taken away): configure warns, part 2's tests and pathtracer build and
-#     link, every part is the student's, said at start, and a test that needs
-#     the compiled test support fails saying why.
+#     link, every part is the student's, said at start; with part 2 done, its
+#     tests run, and those that need the compiled test support fail saying why.
 # Usage: test_release_libcxx.sh ARCHIVE CHECKOUT PT_GRADE WORKDIR
 set -euo pipefail
 archive=$1 source=$2 grade=$3 work=$4
@@ -68,7 +68,8 @@ done
 
 echo "== 4. the stubs fail every visible graded test, naming its task"
 for n in 1 2 3 4 5; do
-  "$grade" check-stubs --part "$n" "build/tests/part${n}_tests"
+  # The checkout's pt-grade reads its own checkout's scenes: this tree's too.
+  "$grade" check-stubs --sandbox-read "$PWD/scenes" --part "$n" "build/tests/part${n}_tests"
 done
 
 echo "== 5. the reference's task files: every visible graded test passes"
@@ -91,10 +92,17 @@ cmake --build build-none --target part2_tests pathtracer
 ./build-none/pathtracer scenes/cornell_spheres.json -s 1 -r 8 6 -f none.png > none-render.out 2>&1 || true
 grep -q "from tasks/ (yours): 1, 2, 3, 4, 5; from the course's solution: none" none-render.out ||
   { cat none-render.out; echo "pathtracer did not say every part is the student's"; exit 1; }
-./build-none/tests/part2_tests > none-tests.out 2>&1 && { echo "part 2's tests passed with the stubs"; exit 1; }
+# With part 2 done (the reference's file as the student's), its tests that
+# compare with the compiled baseline fail saying why; the stubs of parts 1 and
+# 3 to 5 stand where the solution would.
+cp "$source"/reference/part2_*.cpp tasks/
+cmake --build build-none --target part2_tests
+./build-none/tests/part2_tests > none-tests.out 2>&1 && { echo "part 2's tests all passed without the compiled support"; exit 1; }
+cp "$work"/part2_*.cpp tasks/
 grep -q "note: this release has no prebuilt solution for $platform" none-tests.out &&
   grep -q "is part of the course's compiled test support (prebuilt/), which this release does not have for $platform" \
-    none-tests.out && grep -q "not implemented: P2T" none-tests.out ||
-  { tail -40 none-tests.out; echo "part 2's tests did not say why they cannot run"; exit 1; }
+    none-tests.out && grep -Eq '^\[  PASSED  \] [1-9][0-9]* tests?\.$' none-tests.out ||
+  { tail -40 none-tests.out; echo "part 2's tests did not run, or did not say why some cannot"; exit 1; }
+grep -E '^\[  (PASSED|FAILED)  \] [0-9]+ tests?' none-tests.out
 mv "$work/prebuilt-aside" "prebuilt/$platform"
 echo "release with clang and libc++ OK ($(( $(seconds) - t0 )) s)"
