@@ -15,6 +15,13 @@ packages=(
   libcpp-httplib-dev
   gnuplot-nox
 )
+# An instructor's checkout (reference/) also makes the student release: bcp
+# extracts its Boost.Math subset and googletest's source ships in it
+# (tools/release/third_party.cmake); clang with libc++ compiles the solution's
+# libc++ libraries and tests the release as a Mac builds it (release:libcxx).
+# A grader's image (PT_GRADER_IMAGE=1: autograder/build_grader_image.sh)
+# makes no release and needs none of them.
+[ -d reference ] && [ "${PT_GRADER_IMAGE:-}" != 1 ] && packages+=(libboost-tools-dev googletest clang libc++-dev libc++abi-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

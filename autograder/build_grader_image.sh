@@ -10,7 +10,7 @@
 set -euo pipefail
 src=$1
 cd "$src"
-./setup.sh --deps-only
+PT_GRADER_IMAGE=1 ./setup.sh --deps-only  # without the release's tools (setup.sh)
 # The preset's build type (RelWithDebInfo), as in the student's build and the
 # instructor's: the kit compiled here is the kit the repository's tests grade
 # with, and a crash in the grading log has a backtrace with lines.

@@ -357,9 +357,9 @@ int build_and_grade(Graded& graded) {
     // A run's own folder, made where the sandbox can plant nothing: for a
     // failing image test's images (test_images.h) and for each render.
     ImageFolders image_folders{[&area](std::string* error) { return area.fresh_render_folder(error); },
-                               [&opt](const std::string& dir) {
+                               [keep_work = opt.keep_work](const std::string& dir) {  // C++17: no capture of a binding
                                  std::error_code ec;
-                                 if (!opt.keep_work) fs::remove_all(dir, ec);
+                                 if (!keep_work) fs::remove_all(dir, ec);
                                }};
     for (const auto& [part, binary] : binaries) {
       const auto worker = workers.find(part);

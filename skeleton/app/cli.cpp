@@ -181,6 +181,10 @@ int run_cli(int argc, char** argv, const char* student_parts, const char* chosen
     if (!camera_path.empty()) loaded.scene.camera = load_camera(camera_path);
     if (view) {
       for (const auto& w : loaded.warnings) std::cerr << "warning: " << scene_path << ": " << w << "\n";
+#ifdef PT_NO_VIEWER_LIBRARY
+      return bad_input("--view: this build has no viewer: cpp-httplib was not found when it was configured (macOS: "
+                       "brew install cpp-httplib; Debian or Ubuntu: apt install libcpp-httplib-dev; then configure again)");
+#endif
       if (!viewer_entry()) return bad_input("--view: this build of the renderer has no viewer");
       ViewerOptions options{scene_path, {s, exposure}, threads, course_view, port, {}, ""};
       try {

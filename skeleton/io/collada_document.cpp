@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/decimal_text.h"
 #include "io/input_file.h"
 #include "io/scene_text.h"
 #include "io/scene_loader.h"
@@ -167,6 +168,15 @@ std::string_view ColladaDocument::text(XmlNode e, std::string* storage) const {
   return pieces > 1 ? std::string_view(*storage) : first;
 }
 
+// A token as from_chars reads it (a double through read_decimal: libc++'s
+// from_chars reads no floating point).
+static std::from_chars_result read_number(const char* first, const char* last, double& v) {
+  return read_decimal(first, last, v);
+}
+static std::from_chars_result read_number(const char* first, const char* last, uint64_t& v) {
+  return std::from_chars(first, last, v);
+}
+
 // Every token of e's text read by from_chars as a T, with '+' allowed; fails
 // naming the token when it is not a `kind` or `in_range` refuses it.
 template <class T, class InRange>
@@ -176,7 +186,7 @@ std::vector<T> ColladaDocument::parse_all(XmlNode e, const char* kind, InRange i
   for_each_token(text(e, &storage), [&](std::string_view token, size_t index) {
     std::string_view t = without_plus(token);
     T v{};
-    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    auto [end, ec] = read_number(t.data(), t.data() + t.size(), v);
     if (ec == std::errc::invalid_argument || end != t.data() + t.size())
       fail(e, ordinal(index) + " (\"" + quoted(token) + "\") is not " + kind);
     if (ec == std::errc::result_out_of_range || !in_range(v))

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/decimal_text.h"
 #include "io/json_reader.h"  // kMaxMagnitude, the scene format's bound on numbers
 #include "io/scene_loader.h"
 
@@ -161,10 +162,10 @@ class ObjChecker {
       bool exponent_too_large;
       if (!is_decimal(s, &exponent_too_large))
         fail(std::string(what) + " value \"" + std::string(s) + "\" is not a decimal number");
-      // A decimal number: from_chars reads all of it (but for a leading '+').
+      // A decimal number: read_decimal reads all of it (but for a leading '+').
       double v = 0.0;
       const size_t sign = s[0] == '+' ? 1 : 0;
-      auto [end, ec] = std::from_chars(s.data() + sign, s.data() + s.size(), v);
+      auto [end, ec] = read_decimal(s.data() + sign, s.data() + s.size(), v);
       if (ec != std::errc() || !std::isfinite(v) || std::abs(v) > kMaxMagnitude)
         fail(std::string(what) + " value " + std::string(s) + " is larger than 1e30 in magnitude");
     }

@@ -21,7 +21,7 @@ constexpr double kRayEpsilon = 1e-5;
 
 // The estimators of the assignment. Each function below names its task; the
 // students' versions live in tasks/; the course's solution, compiled, in
-// prebuilt/lib/ (the parts a test or PT_REFERENCE_PARTS takes). Randomness
+// prebuilt/ (the parts a test or PT_REFERENCE_PARTS takes). Randomness
 // comes only from the Rng passed in, so results are reproducible per pixel.
 class PathTracer {
  public:

@@ -1,7 +1,8 @@
 # Writes the student release, the grading kit or a grader's export (cmake -P; see CMakeLists.txt).
 #   -DMODE=student|kit|gradescope|prairielearn -DSOURCE_DIR=<checkout> -DBINARY_DIR=<build> -DOUT=<dir>
+#   student only: -DMANIFEST=<graded_manifest.json> -DTHIRD_PARTY=<third_party.cmake's folder>
 #   kit only: -DMANIFEST=<graded_manifest.json> -DPT_GRADE=<pt-grade> -DPT_LINK_GUARD=<pt-link-guard>
-#             -DPT_LIBRARY_CHECK=<pt-library-check>
+#             -DPT_LIBRARY_CHECK=<pt-library-check> -DPREBUILT=<the solution's libraries for this platform>
 # Every file is chosen by an allowlist: what is not named here is not shipped.
 cmake_minimum_required(VERSION 3.22)
 foreach(v MODE SOURCE_DIR BINARY_DIR OUT)
@@ -98,7 +99,7 @@ function(write_release_facts)
     endforeach()
     string(JSON facts SET "${facts}" hidden ${part} "{\"tests\": ${count}, \"hundredths_of_points\": ${points}}")
   endforeach()
-  file(GLOB_RECURSE shipped RELATIVE ${OUT} ${OUT}/skeleton/* ${OUT}/tests/* ${OUT}/prebuilt/lib/*)
+  file(GLOB_RECURSE shipped RELATIVE ${OUT} ${OUT}/skeleton/* ${OUT}/tests/* ${OUT}/prebuilt/*.a ${OUT}/cmake/*)
   list(APPEND shipped CMakeLists.txt CMakePresets.json)
   list(SORT shipped)
   foreach(f IN LISTS shipped)
@@ -183,16 +184,22 @@ macro(copy_course_repository)
   foreach(f CMakeLists.txt CMakePresets.json setup.sh .gitignore)
     copy_file(${S}/${f} ${prefix}${f})
   endforeach()
-  foreach(d skeleton tasks reference tests autograder scenes handouts tools)  # tools/: the root CMakeLists adds it
+  foreach(d cmake skeleton tasks reference tests autograder scenes handouts tools)  # tools/: the root CMakeLists adds it
     copy_tree(${d} EXCLUDE ${scene_excludes})
   endforeach()
 endmacro()
 
 if(MODE STREQUAL "student")
   copy_file(${S}/tools/release/README.student.md README.md)
-  foreach(f CMakeLists.txt setup.sh .gitignore)
+  foreach(f CMakeLists.txt setup.sh .gitignore cmake/dependencies.cmake .devcontainer/devcontainer.json)
     copy_file(${S}/${f} ${f})
   endforeach()
+  # The third-party code a build uses where the system has none
+  # (third_party.cmake made it from this machine's Debian packages).
+  if(NOT DEFINED THIRD_PARTY OR NOT EXISTS ${THIRD_PARTY}/README.md)
+    message(FATAL_ERROR "export.cmake: MODE student needs -DTHIRD_PARTY=<third_party.cmake's folder>")
+  endif()
+  file(COPY ${THIRD_PARTY}/ DESTINATION ${OUT}/third_party)
   # Pushed as a GitHub Classroom template repository, the release grades each
   # push with its visible tests (github-classroom/, docs/instructors.md).
   copy_file(${S}/tools/release/github-classroom/classroom.yml .github/workflows/classroom.yml)
@@ -227,17 +234,16 @@ if(MODE STREQUAL "student")
   # it); not the reference images' renderer, which needs reference/.
   copy_file(${S}/tools/CMakeLists.txt tools/CMakeLists.txt)
   copy_file(${S}/tools/procedural_mesh.cpp tools/procedural_mesh.cpp)
-  # The solution, compiled only.
-  file(GLOB libs ${BINARY_DIR}/prebuilt/lib/*.a)
+  # The solution, compiled only: a folder per platform (README.prebuilt.md).
+  file(GLOB libs RELATIVE ${BINARY_DIR}/prebuilt ${BINARY_DIR}/prebuilt/*-*-*/*.a)
   foreach(lib IN LISTS libs)
-    get_filename_component(name ${lib} NAME)
-    copy_file(${lib} prebuilt/lib/${name})
+    copy_file(${BINARY_DIR}/prebuilt/${lib} prebuilt/${lib})
   endforeach()
   copy_file(${S}/tools/release/README.prebuilt.md prebuilt/README.md)
   without_instructor_notes()
   write_release_facts()
 elseif(MODE STREQUAL "kit")
-  foreach(v MANIFEST PT_GRADE PT_LINK_GUARD PT_LIBRARY_CHECK)
+  foreach(v MANIFEST PT_GRADE PT_LINK_GUARD PT_LIBRARY_CHECK PREBUILT)
     if(NOT DEFINED ${v})
       message(FATAL_ERROR "export.cmake: MODE kit needs -D${v}=...")
     endif()
@@ -276,7 +282,7 @@ elseif(MODE STREQUAL "kit")
     endforeach()
   endif()
   copy_file(${BINARY_DIR}/grader-kit-lib/test_main.o lib/test_main.o)
-  file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${BINARY_DIR}/prebuilt/lib/libpt_part*_reference.a)
+  file(GLOB libs ${BINARY_DIR}/grader-kit-lib/*.a ${PREBUILT}/libpt_part*_reference.a)
   foreach(lib IN LISTS libs)
     get_filename_component(name ${lib} NAME)
     # A boundary part's tests are only in its verifier: its tests' archive,

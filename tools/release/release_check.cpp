@@ -137,9 +137,14 @@ std::vector<std::string> missing_paths(const std::string& rel, const std::string
 
 // Local symbols (nm's lower-case types) other than the assembler's own
 // labels (.L...), in each member of an archive.
+// The archive's local symbols; "(unreadable)" when no nm here reads it (GNU
+// nm reads no Mach-O: a Mac's libraries, added by add_prebuilt.cmake, need
+// LLVM's).
 std::vector<std::string> local_symbols(const fs::path& archive) {
   std::string out;
-  pt::grade::run_command({"nm", "--defined-only", archive.string()}, &out);
+  if (pt::grade::run_command({"nm", "--defined-only", archive.string()}, &out) != 0 &&
+      pt::grade::run_command({"llvm-nm", "--defined-only", archive.string()}, &out) != 0)
+    return {"(unreadable: neither nm nor llvm-nm lists its symbols)"};
   std::vector<std::string> found;
   for (const auto& line : lines_of(out)) {
     std::istringstream in(line);

@@ -36,6 +36,6 @@ leak missing_path "echo 'More in tests/autograder/README.md.' >> handouts/part1.
 leak design_reference "echo '// as DESIGN section 5 says' >> skeleton/core/rng.h"
 leak wrong_citation "sed -i 's/test_triangle.cpp:[0-9]*: Failure/test_triangle.cpp:12: Failure/' handouts/part1.md"
 leak local_symbol "printf 'static int best_split(int x) { return x * 3; }\nint pt_entry(int x) { return best_split(x); }\n' > l.cpp &&
-  c++ -O0 -c l.cpp -o l.o && ar rcs prebuilt/lib/libpt_extra.a l.o && rm l.cpp l.o"
+  c++ -O0 -c l.cpp -o l.o && mkdir -p prebuilt/linux-x86_64-libstdc++ && ar rcs prebuilt/linux-x86_64-libstdc++/libpt_extra.a l.o && rm l.cpp l.o"
 leak commit_hash "sed -i 's/\"name\"/\"head\": \"0123456789abcdef0123456789abcdef01234567\", \"name\"/' scenes/reference/cornell_spheres.json"
 rm -rf "$work"

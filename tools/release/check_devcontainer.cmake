@@ -1,0 +1,53 @@
+# The dev container definition, checked by its structure (no container engine
+# is needed, nor run): cmake -DTREE=<checkout or release> -P check_devcontainer.cmake
+# Fails unless TREE/.devcontainer/devcontainer.json is plain JSON (comments
+# would be allowed by the format, but nothing here could check them) whose
+# image is Debian 12 (bookworm), the system the set-up is written for, whose
+# postCreateCommand is the README's package step, `./setup.sh --deps-only`,
+# which TREE/setup.sh must have, and which forwards the viewer's default port
+# (skeleton/app/cli.cpp).
+cmake_minimum_required(VERSION 3.22)
+set(f ${TREE}/.devcontainer/devcontainer.json)
+if(NOT EXISTS ${f})
+  message(FATAL_ERROR "${f}: missing")
+endif()
+file(READ ${f} doc)
+if(doc MATCHES "(^|\n)[ \t]*//|/[*]")  # CMake's reader would take them
+  message(FATAL_ERROR "${f}: has comments: plain JSON only")
+endif()
+string(JSON type ERROR_VARIABLE err TYPE "${doc}")
+if(err OR NOT type STREQUAL "OBJECT")
+  message(FATAL_ERROR "${f}: not a JSON object: ${err}")
+endif()
+string(JSON image ERROR_VARIABLE err GET "${doc}" image)
+if(err OR NOT image MATCHES "^debian:bookworm(-slim)?$")
+  message(FATAL_ERROR "${f}: \"image\" must be Debian 12 (debian:bookworm), not '${image}'")
+endif()
+string(JSON command ERROR_VARIABLE err GET "${doc}" postCreateCommand)
+if(err OR NOT command STREQUAL "./setup.sh --deps-only")
+  message(FATAL_ERROR "${f}: \"postCreateCommand\" must be \"./setup.sh --deps-only\", not '${command}'")
+endif()
+file(READ ${TREE}/setup.sh setup)
+if(NOT setup MATCHES "\\[ \"\\$\\{1:-\\}\" = \"--deps-only\" \\] && exit 0")
+  message(FATAL_ERROR "${TREE}/setup.sh: has no --deps-only step for the container to run")
+endif()
+file(READ ${TREE}/skeleton/app/cli.cpp cli)
+if(NOT cli MATCHES "int port = ([0-9]+);")
+  message(FATAL_ERROR "skeleton/app/cli.cpp: the viewer's default port was not found")
+endif()
+set(port ${CMAKE_MATCH_1})
+string(JSON n ERROR_VARIABLE err LENGTH "${doc}" forwardPorts)
+set(forwarded OFF)
+if(NOT err AND n GREATER 0)
+  math(EXPR last "${n} - 1")
+  foreach(i RANGE ${last})
+    string(JSON p GET "${doc}" forwardPorts ${i})
+    if(p STREQUAL port)
+      set(forwarded ON)
+    endif()
+  endforeach()
+endif()
+if(NOT forwarded)
+  message(FATAL_ERROR "${f}: \"forwardPorts\" lacks the viewer's port ${port}")
+endif()
+message(STATUS "${f}: Debian 12, ./setup.sh --deps-only, port ${port} forwarded")
