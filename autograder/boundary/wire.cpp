@@ -20,7 +20,7 @@ std::string Reader::get_string(size_t max) {
   const uint32_t n = get<uint32_t>();
   if (n > max) throw LinkBroken("a string longer than " + std::to_string(max) + " bytes");
   need(n);
-  std::string s = bytes_.substr(at_, n);
+  std::string s(bytes_.substr(at_, n));
   at_ += n;
   return s;
 }
