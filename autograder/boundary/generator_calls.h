@@ -214,7 +214,7 @@ class GeneratorCalls {
     ends.resize(n);
     states.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
-      run += in.get_string(kRunBytes);
+      run += in.get_view(kRunBytes);
       ends[i] = static_cast<uint32_t>(run.size());
       in.get(states[i]);
     }
@@ -273,29 +273,37 @@ template <class Once>
 void answer_run(Reader& in, Writer& out, Once&& once) {
   auto rng = in.get<Rng>();
   const auto count = std::clamp<uint32_t>(in.get<uint32_t>(), 1, kLongestRun);
-  Writer run, answer;
+  const size_t start = out.size();
+  out.put(uint32_t{0});  // the run's length, known at its end
   uint32_t n = 0;
-  auto keep = [&] {
-    run.put_string(answer.bytes()).put(rng);
+  // Each answer as put_string writes one, its length patched in once written.
+  auto one = [&] {
+    const size_t at = out.size();
+    out.put(uint32_t{0});
+    try {
+      once(rng, out);
+    } catch (...) {
+      out.truncate(at);
+      throw;
+    }
+    out.patch(at, static_cast<uint32_t>(out.size() - at - sizeof(uint32_t)));
+    out.put(rng);
     ++n;
   };
   const auto deadline = std::chrono::steady_clock::now() + kRunTime;
-  once(rng, answer);  // before the state is copied
-  keep();
+  one();  // before the state is copied
   // The clock is read every 16 calls: a fast function costs little more than it.
-  while (n < count && run.bytes().size() < kRunBytes &&
+  while (n < count && out.size() - start < kRunBytes &&
          (n % 16 != 0 || std::chrono::steady_clock::now() < deadline)) {
-    answer = Writer();
     try {
-      once(rng, answer);
+      one();
     } catch (const LinkBroken&) {
       throw;
     } catch (...) {
       break;
     }
-    keep();
   }
-  out.put(n).put_bytes(run.bytes());
+  out.patch(start, n);
 }
 
 }  // namespace pt::boundary

@@ -18,27 +18,28 @@ namespace pt::boundary {
 // One argument as the worker holds it, for a parameter of type P with a role
 // (tasks.def): `arg(rng)` is what the student's function is passed, `fresh()`
 // makes it as sent again (each call of a run starts from the same
-// arguments), `reply` writes what comes back.
+// arguments), `reply` writes what comes back. By default: nothing to remake,
+// nothing back.
+struct Unchanging {
+  void fresh() {}
+  template <class Object>
+  void reply(Writer&, Object&) const {}
+};
 template <class P, class Role>
 class HeldArgument;
 
 // IN: a value, or a const reference to one.
 template <class P>
-class HeldArgument<P, InTag> {
-  using T = std::decay_t<P>;
-
+class HeldArgument<P, InTag> : public Unchanging {
  public:
   template <class Object>
   HeldArgument(Reader& in, Object& object) {
     get_value(in, value_, object);
   }
-  void fresh() {}
   P arg(Rng*) { return value_; }
-  template <class Object>
-  void reply(Writer&, Object&) const {}
 
  private:
-  T value_{};
+  std::decay_t<P> value_{};
 };
 
 // OUT: a pointer the function writes through; a fresh value each call.
@@ -94,26 +95,20 @@ class HeldArgument<P, InOutTag> {
 
 // RNG: the generator of the run's call.
 template <>
-class HeldArgument<Rng&, GeneratorTag> {
+class HeldArgument<Rng&, GeneratorTag> : public Unchanging {
  public:
   template <class Object>
   HeldArgument(Reader&, Object&) {}
-  void fresh() {}
   Rng& arg(Rng* rng) { return *rng; }
-  template <class Object>
-  void reply(Writer&, Object&) const {}
 };
 
 // CALLBACK: each call of the function is a call back to the verifier's.
 template <>
-class HeldArgument<const std::function<Spectrum()>&, CallbackTag> {
+class HeldArgument<const std::function<Spectrum()>&, CallbackTag> : public Unchanging {
  public:
   template <class Object>
   HeldArgument(Reader&, Object&) {}
-  void fresh() {}
   const std::function<Spectrum()>& arg(Rng*) { return next_; }
-  template <class Object>
-  void reply(Writer&, Object&) const {}
 
  private:
   std::function<Spectrum()> next_ = [] {
@@ -125,16 +120,12 @@ class HeldArgument<const std::function<Spectrum()>&, CallbackTag> {
   };
 };
 
-// BEGIN, END: the object's whole range, which the object builds over.
+// BEGIN, END: the object's whole range, which the object builds over itself.
 template <class Tag>
-class HeldRange {
- public:
+struct HeldRange : Unchanging {
   template <class Object>
   HeldRange(Reader&, Object&) {}
-  void fresh() {}
   BVHAccel::PrimIter arg(Rng*) { return {}; }
-  template <class Object>
-  void reply(Writer&, Object&) const {}
 };
 template <>
 class HeldArgument<BVHAccel::PrimIter, BeginTag> : public HeldRange<BeginTag> {

@@ -77,6 +77,11 @@ class Writer {
     return *this;
   }
   const std::string& bytes() const { return bytes_; }
+  // A u32 written later at `at` (a length known once what follows is written),
+  // and what was written past `size` taken back.
+  size_t size() const { return bytes_.size(); }
+  void patch(size_t at, uint32_t value) { std::memcpy(bytes_.data() + at, &value, sizeof value); }
+  void truncate(size_t size) { bytes_.resize(size); }
 
  private:
   std::string bytes_;
@@ -100,6 +105,8 @@ class Reader {
     value = get<T>();
   }
   std::string get_string(size_t max = 1 << 16);
+  // The same, as a view into the message (valid while its bytes are).
+  std::string_view get_view(size_t max);
   template <class T>
   std::vector<T> get_vector(size_t max) {
     const uint64_t n = get<uint64_t>();
