@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
         if (!grader_ns.empty())
           refuse(kind + name + ", in " + grader_ns + ", which belongs to the process boundary or the grader");
         else if (strong && framework_symbols.count(s.name))
-          refuse("defines " + name + ", which the framework defines: it would replace the framework's");
+          refuse("defines " + name + ", which the framework or the boundary's worker defines: it would replace theirs");
         // A definition in the program, even a weak one, replaces a shared
         // library's for every caller (std::string::_M_append, say, which the
         // boundary's link sends its answers through). The compiler's own

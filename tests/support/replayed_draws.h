@@ -8,7 +8,7 @@
 // of earlier answers that it averages) fails the test that called it, saying
 // so, in the tests' own process as across the grader's boundary, which
 // replays calls of its own where the worker cannot predict them
-// (autograder/boundary/repeated_call.h): a call it answers that way is not
+// (autograder/boundary/generator_calls.h): a call it answers that way is not
 // replayed here again.
 //
 // A test's power does not depend on how many numbers a task draws: only the
