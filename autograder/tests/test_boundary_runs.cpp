@@ -300,5 +300,83 @@ TEST(BoundaryRuns, ATestsOwnReplaySeesAFunctionOfSomethingElse) {
   EXPECT_NE(runs.next(args_of(0.5), again, asks(worker)), first);
 }
 
+// ---- Calls that call back (a pixel's samples): one call a run, its replay
+// answered from a tape of the first time's callbacks
+
+// The verifier's callback as the link serves it: through the tape of a call
+// being replayed. It counts what the test's own function is asked, as a
+// scripted tracer counts its samples.
+struct Callbacks {
+  int served = 0;
+  double serve(double x) {
+    Writer args, answer;
+    args.put(x);
+    through_tape(Call::EstRadiance, args.bytes(), answer, [&](Writer& a) {
+      ++served;
+      a.put(2.0 * x);
+    });
+    Reader r(answer.bytes());
+    return r.get<double>();
+  }
+};
+
+// A pixel loop: n samples, each a callback with a number drawn from the
+// generator; `extra` is added to the callbacks' arguments (a function of
+// something else when it changes between calls).
+std::string pixel_run(const Writer& request, Callbacks& callbacks, const std::function<double()>& extra) {
+  Reader in(request.bytes());
+  const auto n = in.get<int>();
+  Writer out;
+  answer_run(in, out, [&](Rng& rng, Writer& answer) {
+    double sum = 0;
+    for (int i = 0; i < n; ++i) sum += callbacks.serve(rng.uniform() + extra());
+    answer.put(sum);
+  });
+  in.finish();
+  return out.bytes();
+}
+
+TEST(BoundaryRuns, ACallThatCallsBackIsReplayedFromItsTape) {
+  // Every call replayed (one in one): the replay's callbacks are answered
+  // from the record, so the test's function is asked only for the calls it
+  // made; each call is a run of one.
+  Callbacks callbacks;
+  GeneratorCalls runs(Call::RaytracePixel, "PathTracer::raytrace_pixel", true, 1);
+  Writer args;
+  args.put(8);
+  Rng rng(4);
+  int requests = 0;
+  for (int i = 0; i < 10; ++i) {
+    runs.next(args, rng, [&](Call, const Writer& w) {
+      ++requests;
+      return pixel_run(w, callbacks, [] { return 0.0; });
+    });
+  }
+  EXPECT_EQ(callbacks.served, 10 * 8) << "the replays' callbacks came from the tape";
+  EXPECT_EQ(requests, 20) << "a run of one and its replay, for each call";
+}
+
+TEST(BoundaryRuns, AReplayWhoseCallbacksDifferFailsTheCall) {
+  // The same answer and state, but the callbacks' arguments depend on a count
+  // kept between calls: not a function of the arguments and the generator.
+  Callbacks callbacks;
+  GeneratorCalls runs(Call::RaytracePixel, "PathTracer::raytrace_pixel", true, 1);
+  Writer args;
+  args.put(4);
+  Rng rng(4);
+  int calls = 0;
+  try {
+    runs.next(args, rng, [&](Call, const Writer& w) {
+      ++calls;
+      return pixel_run(w, callbacks, [&] { return calls == 1 ? 0.0 : 1e-9; });
+    });
+    FAIL() << "a replay that made other callbacks passed";
+  } catch (const GeneratorContractBroken& e) {
+    EXPECT_NE(std::string(e.what()).find("PathTracer::raytrace_pixel: its answer is not a function of its arguments"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace pt::boundary
