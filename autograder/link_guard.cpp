@@ -1,22 +1,21 @@
-// pt-link-guard: refuses a task file's object before it is linked into a test
-// binary when it could run before the test main, replace part of the test
-// framework, or replace a function of the C or C++ library for the whole
-// program (README.md, "Linking"). The linker alone lets a strong definition
-// win over an inline or template one without a word, and lets any definition
-// in the program replace a shared library's (write(), say, through which the
-// test main reports its verdicts).
+// pt-link-guard: refuses a task file's object before it is linked into the
+// worker (boundary/README.md: the task file's process, which holds no test)
+// when it could replace part of the framework or of the boundary's own code
+// there, or a function of the C or C++ library for the whole program, or
+// when it calls what its part's handout does not give it (README.md,
+// "Linking"). The linker alone lets a strong definition win over an inline or
+// template one without a word, and lets any definition in the program replace
+// a shared library's.
 //
-//   pt-link-guard OBJECT... --tests FILE... --framework FILE... --libraries SHARED_LIBRARY...
-//                 [--solutions FILE...]
+//   pt-link-guard OBJECT... --framework FILE... --libraries SHARED_LIBRARY... [--solutions FILE...]
 //
-// OBJECT: the task file's objects (partN_*.o: the N says whose). --tests: the
-// test side of the link (test main, support, the tests, GoogleTest);
-// --framework: the rest (skeleton, the other parts' solution); --solutions:
-// the other parts' solutions again (partM in each name), whose functions a
-// task file calls only where part_calls.h says its part may.
-// SHARED_LIBRARY: libc, libm, libstdc++, libgcc_s. Exit status 0 when the
-// objects are clean, 1 when not (each reason on stderr), 2 when it could not
-// tell.
+// OBJECT: the task file's objects (partN_*.o: the N says whose). --framework:
+// the rest of the link (skeleton, the other parts' solution, the boundary's
+// worker); --solutions: the other parts' solutions again (partM in each
+// name), whose functions a task file calls only where part_calls.h says its
+// part may. SHARED_LIBRARY: libc, libm, libstdc++, libgcc_s. Exit status 0
+// when the objects are clean, 1 when not (each reason on stderr), 2 when it
+// could not tell.
 #include <cxxabi.h>
 
 #include <cctype>
@@ -63,24 +62,11 @@ std::vector<Symbol> symbols(const std::string& file, bool dynamic, bool defined)
 }
 std::vector<Symbol> defined_symbols(const std::string& file, bool dynamic) { return symbols(file, dynamic, true); }
 
-// readelf's report on `file` (`what`: -S the sections, -g the groups).
+// readelf's report on `file` (`what`: -g the groups).
 std::string readelf(const std::string& what, const std::string& file) {
   std::string out;
   if (run_command({"readelf", what, "-W", file}, &out) != 0) throw std::runtime_error("readelf could not read " + file);
   return out;
-}
-
-std::vector<std::string> section_names(const std::string& file) {
-  std::vector<std::string> names;
-  std::istringstream in(readelf("-S", file));
-  for (std::string line; std::getline(in, line);) {
-    const auto close = line.find(']');
-    if (line.find('[') == std::string::npos || close == std::string::npos) continue;
-    std::istringstream words(line.substr(close + 1));
-    std::string name;
-    if (words >> name) names.push_back(name);
-  }
-  return names;
 }
 
 // The signatures of the object's COMDAT groups: the inline functions and
@@ -111,12 +97,12 @@ bool is_global(char type) { return (type >= 'A' && type <= 'Z' && type != 'U') |
 bool is_weak(char type) { return type == 'W' || type == 'V' || type == 'u'; }
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-// The namespaces that are not a task file's: the test support's
-// (tests/support/), GoogleTest's, the process boundary's (the worker's own
-// code, autograder/boundary/) and the grader's. The framework (skeleton/)
-// uses pt:: alone.
-const char* const kTestNamespaces[] = {"pt::test::",  "pt::grading::", "pt::library::", "pt::error_model::",
-                                       "pt::stats::", "testing::",     "pt::boundary::", "pt::grade::"};
+// The namespaces that are not a task file's: the process boundary's (the
+// worker's own code, boundary/) and the grader's. The framework (skeleton/)
+// uses pt:: alone. The tests' namespaces are not here: the worker holds
+// nothing of the tests, so a definition in them displaces nothing, and a use
+// of them does not link.
+const char* const kGraderNamespaces[] = {"pt::boundary::", "pt::grade::"};
 
 // The part a file is of, from its name (part3_direct_lighting.cpp.o,
 // libpt_part3_reference.a), or 0.
@@ -137,10 +123,10 @@ bool may_call(int part, const std::string& demangled) {
   return false;
 }
 
-// The test-side namespace a demangled name mentions anywhere (its own scope,
+// The grader's namespace a demangled name mentions anywhere (its own scope,
 // a template argument, a parameter type), or "".
-std::string test_namespace_in(const std::string& demangled) {
-  for (const char* ns : kTestNamespaces)
+std::string grader_namespace_in(const std::string& demangled) {
+  for (const char* ns : kGraderNamespaces)
     for (size_t at = demangled.find(ns); at != std::string::npos; at = demangled.find(ns, at + 1))
       if (at == 0 || !(std::isalnum(static_cast<unsigned char>(demangled[at - 1])) || demangled[at - 1] == '_' ||
                        demangled[at - 1] == ':'))
@@ -148,65 +134,14 @@ std::string test_namespace_in(const std::string& demangled) {
   return "";
 }
 
-// The outermost scope of a mangled name ("std", "glm", "pt", "" for a global
-// or unscoped name) and, under pt, the next one: enough to tell an
-// instantiation of the standard library, GLM or the framework's headers.
-std::pair<std::string, std::string> mangled_scope(const std::string& m) {
-  size_t p = 2;  // after _Z
-  if (m.compare(0, 2, "_Z") != 0) return {"", ""};
-  // Special names of a type or an entity: vtable, VTT, typeinfo and its name,
-  // a thread_local's init and wrapper functions, guard variable, a lifetime-
-  // extended temporary, a local entity's enclosing function.
-  for (const char* special : {"TV", "TT", "TI", "TS", "TH", "TW", "GV", "GR", "Z"})
-    if (m.compare(p, std::strlen(special), special) == 0) {
-      p += std::strlen(special);
-      break;
-    }
-  const bool nested = p < m.size() && m[p] == 'N';
-  if (nested) ++p;
-  while (p < m.size() && (m[p] == 'r' || m[p] == 'V' || m[p] == 'K')) ++p;
-  if (p < m.size() && (m[p] == 'R' || m[p] == 'O')) ++p;
-  if (m.compare(p, 2, "St") == 0) return {"std", ""};
-  if (p + 1 < m.size() && m[p] == 'S' && std::strchr("absiod", m[p + 1])) return {"std", ""};  // Sa: std::allocator, ...
-  auto component = [&](size_t& at) {
-    size_t len = 0;
-    while (at < m.size() && std::isdigit(static_cast<unsigned char>(m[at]))) len = len * 10 + (m[at++] - '0');
-    std::string name = m.substr(at, len);
-    at += len;
-    return name;
-  };
-  if (p >= m.size() || !std::isdigit(static_cast<unsigned char>(m[p]))) return {"", ""};
-  std::string first = component(p);
-  if (!nested) return {"", ""};  // a global function or variable: no scope
-  std::string second = p < m.size() && std::isdigit(static_cast<unsigned char>(m[p])) ? component(p) : "";
-  return {first, second};
-}
-
-// An inline or template definition that any file including the standard
-// library, GLM or the framework's headers makes: the task's copy and the
-// tests' copy are the same code, and the task's, linked last, is discarded.
-bool header_instantiation(const std::string& mangled) {
-  // The compiler's own: the reference to the C++ personality routine that
-  // every object with exception handling holds.
-  if (starts_with(mangled, "DW.ref.")) return true;
-  const auto [first, second] = mangled_scope(mangled);
-  if (first == "std" || first == "__gnu_cxx" || first == "__cxxabiv1" || first == "glm") return true;
-  if (first != "pt") return false;
-  for (const char* ns : kTestNamespaces)
-    if (starts_with(ns, "pt::") && second + "::" == std::string(ns + 4)) return false;
-  return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> objects, tests, framework, libraries, solutions;
+  std::vector<std::string> objects, framework, libraries, solutions;
   std::vector<std::string>* list = &objects;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--tests")
-      list = &tests;
-    else if (a == "--framework")
+    if (a == "--framework")
       list = &framework;
     else if (a == "--libraries")
       list = &libraries;
@@ -216,15 +151,12 @@ int main(int argc, char** argv) {
       list->push_back(a);
   }
   if (objects.empty()) {
-    std::fprintf(stderr,
-                 "usage: pt-link-guard OBJECT... --tests FILE... --framework FILE... --libraries SHARED_LIBRARY...\n");
+    std::fprintf(stderr, "usage: pt-link-guard OBJECT... --framework FILE... --libraries SHARED_LIBRARY... "
+                         "[--solutions FILE...]\n");
     return 2;
   }
   try {
-    std::set<std::string> test_symbols, framework_symbols, library_symbols;
-    for (const auto& f : tests)
-      for (const auto& s : defined_symbols(f, false))
-        if (is_global(s.type)) test_symbols.insert(s.name);
+    std::set<std::string> framework_symbols, library_symbols;
     for (const auto& f : framework)
       for (const auto& s : defined_symbols(f, false))
         if (is_global(s.type)) framework_symbols.insert(s.name);
@@ -238,29 +170,17 @@ int main(int argc, char** argv) {
     std::vector<std::string> problems;
     for (const auto& object : objects) {
       auto refuse = [&](const std::string& why) { problems.push_back(object + ": " + why); };
-      for (const auto& section : section_names(object))
-        if (starts_with(section, ".preinit_array") || section == ".init")
-          refuse("has a " + section + " section: code that runs before the test main");
       const std::set<std::string> comdat = comdat_signatures(object);
       for (const auto& s : defined_symbols(object, false)) {
-        const std::string name = demangle(s.name);
-        if (s.type == 'i') {
-          refuse("defines " + name + " as an indirect function (ifunc): code that runs before the test main");
-          continue;
-        }
         if (!is_global(s.type)) continue;  // internal linkage: the task file's own
+        const std::string name = demangle(s.name);
         const bool strong = !is_weak(s.type);
         const std::string kind = strong ? "defines " : "defines an inline or weak copy of ";
-        const std::string test_ns = test_namespace_in(name);
-        if (s.name == "main")
-          refuse("defines main()");
-        else if (!test_ns.empty())
-          refuse(kind + name + ", in " + test_ns +
-                 ", which belongs to the tests, their support, GoogleTest, the process boundary or the grader");
-        else if (test_symbols.count(s.name) && (strong || !header_instantiation(s.name)))
-          refuse(kind + name + ", which the tests or their support define: it could replace theirs");
+        const std::string grader_ns = grader_namespace_in(name);
+        if (!grader_ns.empty())
+          refuse(kind + name + ", in " + grader_ns + ", which belongs to the process boundary or the grader");
         else if (strong && framework_symbols.count(s.name))
-          refuse("defines " + name + ", which the test framework or the skeleton defines: it would replace theirs");
+          refuse("defines " + name + ", which the framework or the boundary's worker defines: it would replace theirs");
         // A definition in the program, even a weak one, replaces a shared
         // library's for every caller (std::string::_M_append, say, which the
         // boundary's link sends its answers through). The compiler's own
@@ -271,12 +191,7 @@ int main(int argc, char** argv) {
           refuse((strong ? "defines " : "defines a weak ") + name +
                  ", which the C or C++ library exports: it would replace the library's everywhere");
       }
-      // What the task file uses must come from the framework or the
-      // libraries: the tests' own code (the support's BVH builder, its
-      // expected values, GoogleTest's registry) is not the task's to call.
       for (const auto& s : symbols(object, false, false)) {
-        if (test_symbols.count(s.name) && !framework_symbols.count(s.name) && !library_symbols.count(s.name))
-          refuse("uses " + demangle(s.name) + ", which only the tests, their support or GoogleTest define");
         const std::string name = demangle(s.name);
         for (const auto& answer : pt::grade::kTaskAnswers)
           if (starts_with(name, answer.function))
@@ -292,7 +207,7 @@ int main(int argc, char** argv) {
     for (const auto& p : problems) std::fprintf(stderr, "pt-link-guard: %s\n", p.c_str());
     std::fprintf(stderr,
                  "pt-link-guard: a task file defines the task functions and its own helpers, nothing else, and "
-                 "calls the framework and the C++ library, not the tests (autograder/README.md, \"Linking\")\n");
+                 "calls the framework and the C++ library (autograder/README.md, \"Linking\")\n");
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pt-link-guard: %s\n", e.what());

@@ -78,4 +78,66 @@ Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect
                                            : estimate_direct_lighting_importance(r, isect, rng);
 }
 
+// P3T6 (extension): multiple importance sampling, balance heuristic. Every
+// light with an area is one sampling strategy and the BSDF another, each
+// taking ns_area_light samples; a sample's weight is the density of the
+// strategy that drew it over the sum of all of them at its direction. Every
+// strategy estimates the same thing: the light emitted towards p by the first
+// surface along the direction (the sampled light's, if none is in between).
+Spectrum PathTracer::estimate_direct_lighting_mis(const Ray& r, const Intersection& isect, Rng& rng) const {
+  const Frame frame = Frame::from_normal(isect.n);
+  const Vec3 p = r.at(isect.t);
+  const Vec3 wo = frame.to_local(-r.d);
+  const int m = settings.ns_area_light;
+  // Every strategy's density at a direction (world and local): the BSDF's and
+  // each area light's.
+  auto densities = [&](const Vec3& dir, const Vec3& local) {
+    double sum = pdf_cosine_hemisphere(local);
+    for (const auto& light : scene->lights)
+      if (!light->is_delta_light()) sum += light->pdf(p, dir);
+    return sum;
+  };
+  // What arrives along `dir` from the first surface before `dist`, or
+  // `beyond` when there is none.
+  auto arriving = [&](const Vec3& dir, double dist, const Spectrum& beyond) {
+    Ray ray(p, dir, dist);
+    ray.min_t = kRayEpsilon;
+    Intersection seen;
+    if (!scene->intersect(ray, &seen)) return beyond;
+    return seen.bsdf->get_emission(Frame::from_normal(seen.n).to_local(-dir));
+  };
+  Spectrum L(0.0);
+  for (const auto& light : scene->lights) {
+    const bool delta = light->is_delta_light();
+    const int n = delta ? 1 : m;
+    for (int i = 0; i < n; ++i) {
+      Vec3 dir;
+      double dist, light_pdf;
+      const Spectrum Le = light->sample_L(p, &dir, &dist, &light_pdf, rng);
+      const Vec3 local = frame.to_local(dir);
+      if (light_pdf <= 0.0 || local.z <= 0.0) continue;
+      Spectrum Li = Le;
+      if (delta) {  // its one exact sample, as P3T4's: the light or nothing
+        Ray to_light(p, dir, dist - kRayEpsilon);
+        to_light.min_t = kRayEpsilon;
+        if (scene->has_intersection(to_light)) continue;
+      } else {
+        Li = arriving(dir, dist - kRayEpsilon, Le);
+      }
+      const double weight = delta ? 1.0 : light_pdf / densities(dir, local);
+      L += isect.bsdf->f(wo, local) * Li * local.z / light_pdf * weight / double(n);
+    }
+  }
+  for (int i = 0; i < m; ++i) {
+    Vec3 local;
+    double bsdf_pdf;
+    const Spectrum f = isect.bsdf->sample_f(wo, &local, &bsdf_pdf, rng);
+    if (bsdf_pdf <= 0.0 || local.z <= 0.0) continue;
+    const Vec3 dir = frame.to_world(local);
+    const Spectrum Li = arriving(dir, kInf, scene->background(dir));
+    L += f * Li * local.z / bsdf_pdf * (bsdf_pdf / densities(dir, local)) / double(m);
+  }
+  return L;
+}
+
 }  // namespace pt

@@ -43,4 +43,15 @@ Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect
   throw NotImplemented("P3T5 PathTracer::one_bounce_radiance");
 }
 
+Spectrum PathTracer::estimate_direct_lighting_mis(const Ray& r, const Intersection& isect, Rng& rng) const {
+  // TODO(P3T6): an extension, worth points only when your instructor says so.
+  // For each of ns_area_light rounds: one light sample of every light with an
+  // area (as P3T4: shadow ray, skipped below the horizon) and one BSDF sample
+  // (sample_f; trace it and take the emission it sees, as P3T3), each weighted
+  // by the balance heuristic: its pdf / (the sum of every area light's pdf(p, wi)
+  // + the BSDF's pdf_cosine_hemisphere) at its direction. Average each strategy's
+  // rounds; a delta light takes one exact sample, unweighted.
+  throw NotImplemented("P3T6 PathTracer::estimate_direct_lighting_mis");
+}
+
 }  // namespace pt

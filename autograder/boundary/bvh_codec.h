@@ -1,14 +1,16 @@
 #pragma once
-// Part 2 across the boundary (README.md beside this file). A BVH's primitives
-// cross once, when its constructor calls construct_bvh: each one's box and
-// whether it has a BSDF, never its geometry. The worker builds over handles
-// that hold only that, with the student's code, and sends back the order the
-// build left them in and the tree in preorder; the verifier rebuilds the tree
-// and keeps it. A traversal then names the tree and a node of it. Every
-// primitive test the student's code makes on a handle is a call back to the
-// verifier (Call::TestPrimitive), which makes it on its own primitive: the
-// tests count work where they run, and the worker has no geometry to test
-// any other way. A hit record's primitive crosses as its index (a handle).
+// Part 2 across the boundary (README.md beside this file): tasks.def's
+// TreeBuild and Tree. A BVH's primitives cross once, when its constructor
+// calls construct_bvh: each one's box and whether it has a BSDF, never its
+// geometry. The worker builds over handles that hold only that, with the
+// student's code, and sends back the order the build left them in and the
+// tree in preorder; the verifier rebuilds the tree and keeps it. A traversal
+// then names the tree and a node of it. Every primitive test the student's
+// code makes on a handle is a call back to the verifier
+// (Call::TestPrimitive), which makes it on its own primitive: the tests count
+// work where they run, and the worker has no geometry to test any other way.
+// A hit record's primitive crosses as its index (a handle). The verifier's
+// halves are in bvh_verifier.cpp, the worker's in bvh_worker.cpp.
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -19,7 +21,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crossing.h"
 #include "geometry/bvh.h"
+#include "objects.h"
 #include "wire.h"
 
 namespace pt::boundary::bvh {
@@ -175,4 +179,84 @@ struct Prefetched {
 };
 constexpr uint32_t kMaxPrefetched = 32;
 
+struct BuiltTree;
+struct WorkerTree;
+class InUse;
+
 }  // namespace pt::boundary::bvh
+
+namespace pt::boundary {
+
+// construct_bvh on all of a BVHAccel's primitives (BEGIN, END): their boxes
+// go, the build's order and tree come back.
+struct TreeBuild {
+  static constexpr bool kCallsBack = true;
+  struct Sent : SentObject {
+    explicit Sent(BVHAccel& accel);
+    ~Sent();
+    void put(Writer& w) const;
+    void begin(BVHAccel::PrimIter at) const;  // must be the first primitive
+    void end(BVHAccel::PrimIter at) const;    // must be past the last
+    std::unique_ptr<BVHNode> get_tree(Reader& r);
+
+   private:
+    BVHAccel& accel_;
+    std::unique_ptr<bvh::BuiltTree> tree_;
+    std::unique_ptr<bvh::InUse> in_use_;
+  };
+  struct Held {
+    explicit Held(Reader& in);
+    ~Held();
+    // The student's construct_bvh, called by the BVHAccel constructor.
+    template <class Fn>
+    std::unique_ptr<BVHNode> invoke(Fn, BVHAccel::PrimIter, BVHAccel::PrimIter, size_t max_leaf_size) {
+      build(max_leaf_size);
+      return nullptr;  // the tree is the accelerator's: put_tree sends it
+    }
+    void put_tree(Writer& w);
+    void put_after(Writer&) const {}
+
+   private:
+    void build(size_t max_leaf_size);
+    std::unique_ptr<bvh::WorkerTree> tree_;
+    int64_t room_ = -1;
+  };
+};
+
+// A traversal of a tree built across the boundary, from one of its nodes: the
+// node crosses as its position in preorder, a hit record's primitive as its
+// index.
+struct Tree {
+  static constexpr bool kCallsBack = true;
+  struct Sent : SentObject {
+    explicit Sent(const BVHAccel& accel);
+    ~Sent();
+    void put(Writer& w) const;
+    void put_node(Writer& w, const BVHNode* node) const;
+    void put_hit(Writer& w, const Intersection& h);
+    void get_hit(Reader& r, Intersection& h) const;
+
+   private:
+    const bvh::BuiltTree& tree_;
+    std::unique_ptr<bvh::InUse> in_use_;
+    double t_before_ = 0.0;
+    int64_t handle_before_ = 0;
+  };
+  struct Held {
+    explicit Held(Reader& in);
+    const BVHNode* get_node(Reader& r) const;
+    void get_hit(Reader& r, Intersection& h) const;
+    void put_hit(Writer& w, const Intersection& h) const;
+    template <class Fn, class... Args>
+    bool invoke(Fn fn, Args&&... args) {
+      return (accel().*fn)(std::forward<Args>(args)...);
+    }
+    void put_after(Writer&) const {}
+
+   private:
+    const BVHAccel& accel() const;
+    bvh::WorkerTree& tree_;
+  };
+};
+
+}  // namespace pt::boundary

@@ -1,8 +1,9 @@
 #pragma once
-// An Intersection across the boundary. Its pointers mean nothing in the other
-// process, so each crosses as what it points at: nothing, the primitive being
-// asked (or its BSDF), or something else, which the receiving side maps to
-// its own objects.
+// A hit record on a call to one primitive (Part 1's shapes). Its pointers
+// mean nothing in the other process, so each crosses as what it points at:
+// nothing, the primitive asked (or its BSDF), or something else, which the
+// receiving side maps to an object of its own. The calls on a scene and on a
+// BVH name their objects by index instead (scene_codec.h, bvh_codec.h).
 #include "geometry/intersection.h"
 #include "geometry/primitive.h"
 #include "geometry/sphere.h"
@@ -10,8 +11,6 @@
 #include "wire.h"
 
 namespace pt::boundary {
-
-enum class Points : uint8_t { Nothing = 0, Asked = 1, Elsewhere = 2 };
 
 // What a hit's "something else" becomes on a side that has no such object
 // of its own: objects nobody else made, so that no test's object equals them.
@@ -24,27 +23,45 @@ inline const BSDF* elsewhere_bsdf() {
   return &b;
 }
 
-struct HitSide {
-  const Primitive* asked;            // the primitive whose intersect() is called
-  const Primitive* elsewhere;        // what "something else" becomes on this side
-  const BSDF* asked_bsdf;            // asked->get_bsdf()
-  const BSDF* elsewhere_bsdf;
-};
+// The hits of calls on `asked`. Each side uses it the same way: a hit sent
+// remembers what it pointed at, and "something else" in the hit that comes
+// back is that again when it was something else too (the verifier's own
+// object), otherwise a stand-in.
+class AskedHits {
+ public:
+  explicit AskedHits(const Primitive* asked) : asked_(asked), asked_bsdf_(asked->get_bsdf()) {}
 
-inline void put_hit(Writer& w, const Intersection& h, const HitSide& side) {
-  auto token = [](const void* p, const void* asked) {
+  void put_hit(Writer& w, const Intersection& h) {
+    before_primitive_ = h.primitive;
+    before_bsdf_ = h.bsdf;
+    w.put(h.t).put(h.n).put(h.barycentric).put(token(h.primitive, asked_)).put(token(h.bsdf, asked_bsdf_));
+  }
+
+  void get_hit(Reader& r, Intersection& h) const {
+    r.get(h.t);
+    r.get(h.n);
+    r.get(h.barycentric);
+    const auto primitive = r.get<Points>(), bsdf = r.get<Points>();
+    const bool prim_elsewhere = before_primitive_ && before_primitive_ != asked_;
+    const bool bsdf_elsewhere = before_bsdf_ && before_bsdf_ != asked_bsdf_;
+    h.primitive = primitive == Points::Nothing ? nullptr
+                  : primitive == Points::Asked ? asked_
+                                               : prim_elsewhere ? before_primitive_ : elsewhere_primitive();
+    h.bsdf = bsdf == Points::Nothing ? nullptr
+             : bsdf == Points::Asked ? asked_bsdf_
+                                     : bsdf_elsewhere ? before_bsdf_ : elsewhere_bsdf();
+  }
+
+ private:
+  enum class Points : uint8_t { Nothing = 0, Asked = 1, Elsewhere = 2 };
+  static Points token(const void* p, const void* asked) {
     return p == nullptr ? Points::Nothing : p == asked ? Points::Asked : Points::Elsewhere;
-  };
-  w.put(h.t).put(h.n).put(h.barycentric).put(token(h.primitive, side.asked)).put(token(h.bsdf, side.asked_bsdf));
-}
+  }
 
-inline void get_hit(Reader& r, Intersection& h, const HitSide& side) {
-  r.get(h.t);
-  r.get(h.n);
-  r.get(h.barycentric);
-  const auto primitive = r.get<Points>(), bsdf = r.get<Points>();
-  h.primitive = primitive == Points::Nothing ? nullptr : primitive == Points::Asked ? side.asked : side.elsewhere;
-  h.bsdf = bsdf == Points::Nothing ? nullptr : bsdf == Points::Asked ? side.asked_bsdf : side.elsewhere_bsdf;
-}
+  const Primitive* asked_;
+  const BSDF* asked_bsdf_;
+  const Primitive* before_primitive_ = nullptr;
+  const BSDF* before_bsdf_ = nullptr;
+};
 
 }  // namespace pt::boundary

@@ -8,12 +8,12 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "hit_codec.h"
-#include "path_guard_copy.h"
+#include "scene/path_guard.h"
 
 namespace pt::boundary {
 namespace {
 
-BsdfEncoder g_encoder = nullptr;
+enum class BsdfKind : uint8_t { Diffuse = 1, Emission = 2, GuardedDiffuse = 3, NormalMirror = 4 };
 enum class PrimitiveKind : uint8_t { Triangle = 1, Sphere = 2 };
 enum class LightKind : uint8_t { Point = 1, Directional = 2, Area = 3, Sky = 4 };
 
@@ -47,7 +47,11 @@ void put_bsdf(Writer& w, const BSDF& b) {
     w.put(BsdfKind::Diffuse).put(d->reflectance).put(d->emission);
   } else if (const auto* e = exactly<EmissionBSDF>(b)) {
     w.put(BsdfKind::Emission).put(e->radiance);
-  } else if (!g_encoder || !g_encoder(w, b)) {
+  } else if (const auto* g = exactly<GuardedDiffuse>(b)) {
+    w.put(BsdfKind::GuardedDiffuse).put(g->albedo()).put(g->emission());
+  } else if (exactly<NormalMirror>(b)) {
+    w.put(BsdfKind::NormalMirror);
+  } else {
     cannot_cross("BSDF", typeid(b));
   }
 }
@@ -99,8 +103,6 @@ void get_light(Reader& r, Scene& scene) {
 
 }  // namespace
 
-void set_bsdf_encoder(BsdfEncoder encode) { g_encoder = encode; }
-
 void put_scene(Writer& w, const Scene& scene, SceneIndex& index) {
   index = SceneIndex();
   w.put(static_cast<uint64_t>(scene.bsdfs.size()));
@@ -139,10 +141,10 @@ std::unique_ptr<Scene> get_scene(Reader& r) {
       case BsdfKind::Emission: scene->add_bsdf<EmissionBSDF>(r.get<Spectrum>()); break;
       case BsdfKind::GuardedDiffuse: {
         const auto reflectance = r.get<Spectrum>();
-        scene->add_bsdf<GuardedDiffuseCopy>(reflectance, r.get<Spectrum>());
+        scene->add_bsdf<GuardedDiffuse>(reflectance, r.get<Spectrum>());
         break;
       }
-      case BsdfKind::NormalMirror: scene->add_bsdf<NormalMirrorCopy>(); break;
+      case BsdfKind::NormalMirror: scene->add_bsdf<NormalMirror>(); break;
       default: throw std::runtime_error("a BSDF of unknown kind");
     }
   }
@@ -208,6 +210,34 @@ void get_scene_hit(Reader& r, Intersection& hit, const Scene& scene) {
     throw std::runtime_error("a primitive index out of range");
   }
   hit.bsdf = bsdf_at(r.get<int64_t>(), scene);
+}
+
+namespace {
+
+struct SentScene {
+  uint64_t id = 0;
+  std::unique_ptr<Scene> scene;
+};
+
+SentScene& sent_scene() {
+  static SentScene s;
+  return s;
+}
+
+}  // namespace
+
+void serve_scene_definitions(Link& link) {
+  link.on(Call::DefineScene, [](Reader& in, Writer&) {
+    const auto id = in.get<uint64_t>();
+    sent_scene().scene.reset();
+    sent_scene().scene = get_scene(in);
+    sent_scene().id = id;
+  });
+}
+
+const Scene& scene_named(uint64_t id) {
+  if (!sent_scene().scene || id != sent_scene().id) throw std::runtime_error("a call names a scene the worker was not sent");
+  return *sent_scene().scene;
 }
 
 }  // namespace pt::boundary

@@ -20,8 +20,10 @@
 #include <utility>
 #include <vector>
 
+#include "crossing.h"
+#include "generator_calls.h"
 #include "one_cpu.h"
-#include "support/generator_contract.h"
+#include "scene_codec.h"
 
 extern char** environ;
 
@@ -30,56 +32,6 @@ namespace {
 
 thread_local const PathTracer* g_tracer = nullptr;
 thread_local const std::function<Spectrum()>* g_next_sample = nullptr;
-
-// The callbacks of one pixel call, recorded so that the call can be replayed
-// without calling the test's tracer again (a scripted one counts its calls):
-// a replay must make the same callbacks, in the same order, with the same
-// arguments, and gets the answers recorded.
-struct Tape {
-  struct Callback {
-    Call call;
-    std::string args, answer;
-  };
-  std::vector<Callback> callbacks;
-  bool playing = false;
-  size_t at = 0;
-  bool differs = false;
-};
-thread_local Tape* g_tape = nullptr;
-
-class TapeScope {
- public:
-  explicit TapeScope(Tape* tape) : previous_(g_tape) { g_tape = tape; }
-  ~TapeScope() { g_tape = previous_; }
-  TapeScope(const TapeScope&) = delete;
-  TapeScope& operator=(const TapeScope&) = delete;
-
- private:
-  Tape* previous_;
-};
-
-// Serves a callback with `serve` or, while a tape plays, from the tape.
-// `args` are the callback's arguments as received.
-void through_tape(Call call, const std::string& args, Writer& result, const std::function<void(Writer&)>& serve) {
-  Tape* tape = g_tape;
-  if (!tape) return serve(result);
-  if (!tape->playing) {
-    Writer answer;
-    serve(answer);
-    tape->callbacks.push_back({call, args, answer.bytes()});
-    result.put_bytes(answer.bytes());
-    return;
-  }
-  if (tape->at < tape->callbacks.size() && tape->callbacks[tape->at].call == call &&
-      tape->callbacks[tape->at].args == args) {
-    result.put_bytes(tape->callbacks[tape->at++].answer);
-    return;
-  }
-  // Not the callback the first call made here: the replay differs. It gets
-  // an answer of the right shape so that it can end.
-  tape->differs = true;
-  serve(result);
-}
 
 std::vector<std::string> own_arguments() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
@@ -152,30 +104,41 @@ void start_worker(const std::string& path, int& in, int& out) {
   out = requests[1];
 }
 
-std::vector<std::pair<Call, Handler>>& part_callbacks() {
-  static std::vector<std::pair<Call, Handler>> callbacks;
-  return callbacks;
+std::vector<std::pair<Call, Handler>>& callbacks() {
+  static std::vector<std::pair<Call, Handler>> all;
+  return all;
 }
 
+// Each callback is served through the tape of a call being replayed, if any
+// (generator_calls.h): a replay must make the callbacks the first time made.
 void serve_callbacks(Link& link) {
-  for (const auto& [call, handler] : part_callbacks()) link.on(call, handler);
-  link.on(Call::EstRadiance, [](Reader& args, Writer& result) {
-    if (!g_tracer) throw std::runtime_error("est_radiance_global_illumination called outside a pixel's sampling");
-    const auto ray = args.get<Ray>();
-    auto rng = args.get<Rng>();
-    // Field by field: a Ray's padding is whatever the worker left there.
-    Writer received;
-    received.put(ray.o).put(ray.d).put(ray.min_t).put(ray.max_t).put(ray.depth).put(rng);
-    through_tape(Call::EstRadiance, received.bytes(), result, [&](Writer& answer) {
-      Rng state = rng;
-      answer.put(g_tracer->est_radiance_global_illumination(ray, state)).put(state);
+  for (const auto& [call, handler] : callbacks())
+    link.on(call, [call = call, handler = handler](Reader& args, Writer& result) {
+      Reader received(args.all());
+      args.skip_to_end();  // read by `received`, unless the tape answers
+      through_tape(call, received.all(), result, [&](Writer& answer) {
+        handler(received, answer);
+        received.finish();
+      });
     });
-  });
-  link.on(Call::NextSample, [](Reader&, Writer& result) {
-    if (!g_next_sample) throw std::runtime_error("next_sample called outside sample_adaptively");
-    through_tape(Call::NextSample, "", result, [](Writer& answer) { answer.put((*g_next_sample)()); });
-  });
 }
+
+// A pixel's samples (PixelTracer): the radiance of the tracer the test made.
+void est_radiance(Reader& args, Writer& result) {
+  if (!g_tracer) throw std::runtime_error("est_radiance_global_illumination called outside a pixel's sampling");
+  const Ray ray = Crossing<Ray>::get(args);
+  auto rng = args.get<Rng>();
+  result.put(g_tracer->est_radiance_global_illumination(ray, rng)).put(rng);
+}
+
+// sample_adaptively's samples (CALLBACK): the test's next_sample.
+void next_sample(Reader&, Writer& result) {
+  if (!g_next_sample) throw std::runtime_error("next_sample called outside sample_adaptively");
+  result.put((*g_next_sample)());
+}
+
+const bool kCallbacksServed = (serve_callback(Call::EstRadiance, est_radiance),
+                               serve_callback(Call::NextSample, next_sample), true);
 
 Link* make_link() {
   // Nothing of this process may be read through /proc by a process of the
@@ -229,7 +192,7 @@ std::string call_worker(Call call, const Writer& args) {
   }
 }
 
-void serve_callback(Call call, Handler handler) { part_callbacks().emplace_back(call, std::move(handler)); }
+void serve_callback(Call call, Handler handler) { callbacks().emplace_back(call, std::move(handler)); }
 
 void answer_broke_link(const std::string& why) { worker_lost(why, kWorkerBrokeLink); }
 
@@ -257,64 +220,6 @@ SceneRef refer_to(const Scene& scene) {
     ++id;
   }
   return {id, index};
-}
-
-namespace {
-
-// One pixel call: its estimate and the generator's state after it.
-std::pair<PixelEstimate, Rng> pixel_once(Call call, const Writer& in) {
-  const std::string answer = call_worker(call, in);
-  return read_answer([&] {
-    Reader out(answer);
-    const auto estimate = out.get<PixelEstimate>();
-    const auto rng = out.get<Rng>();
-    out.finish();
-    return std::make_pair(estimate, rng);
-  });
-}
-
-// One pixel call in kReplayPixelOneIn is replayed. The pixel tests make tens
-// of calls, not millions.
-constexpr uint32_t kReplayPixelOneIn = 4;
-
-bool replay_this_pixel() {
-  thread_local std::mt19937 replays(unpredictable_seed());
-  return std::uniform_int_distribution<uint32_t>(0, kReplayPixelOneIn - 1)(replays) == 0;
-}
-
-bool same_pixel(const std::pair<PixelEstimate, Rng>& a, const std::pair<PixelEstimate, Rng>& b) {
-  return test::same_bits(a.first.radiance, b.first.radiance) && a.first.num_samples == b.first.num_samples &&
-         test::same_bits(a.second, b.second);
-}
-
-}  // namespace
-
-PixelEstimate ask_pixel(Call call, const std::string& task, const PathTracer& tracer, int x, int y, Rng& rng) {
-  TracerScope scope(&tracer);
-  Writer in;
-  in.put(tracer.settings).put(*tracer.camera).put(x).put(y).put(rng);
-  const bool replay = replay_this_pixel();
-  Tape tape;
-  std::pair<PixelEstimate, Rng> first;
-  {
-    const TapeScope record(replay ? &tape : nullptr);
-    first = pixel_once(call, in);
-  }
-  if (!test::draws_between(rng, first.second)) throw test::GeneratorContractBroken(test::generator_moved_back(task));
-  if (replay) {
-    tape.playing = true;
-    bool same = false;
-    try {
-      const TapeScope play(&tape);
-      same = same_pixel(pixel_once(call, in), first);
-    } catch (const std::exception&) {
-      // An exception where the first time there was an answer.
-    }
-    if (!same || tape.differs || tape.at != tape.callbacks.size())
-      throw test::GeneratorContractBroken(test::not_a_function_of_its_generator(task));
-  }
-  rng = first.second;
-  return first.first;
 }
 
 TracerScope::TracerScope(const PathTracer* tracer) : previous_(g_tracer) { g_tracer = tracer; }

@@ -16,11 +16,13 @@ const std::string kNotImplementedPrefix = "not implemented: ";
 
 }  // namespace
 
-std::string Reader::get_string(size_t max) {
+std::string Reader::get_string(size_t max) { return std::string(get_view(max)); }
+
+std::string_view Reader::get_view(size_t max) {
   const uint32_t n = get<uint32_t>();
   if (n > max) throw LinkBroken("a string longer than " + std::to_string(max) + " bytes");
   need(n);
-  std::string s = bytes_.substr(at_, n);
+  const std::string_view s = bytes_.substr(at_, n);
   at_ += n;
   return s;
 }

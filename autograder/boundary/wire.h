@@ -15,8 +15,8 @@
 // tag without reading the worker's memory) or, right or wrong, followed by the
 // worker's real answer, which the verifier's next call reads as a stale one.
 // Either breaks the link.
-// and a payload is the call's values, copied as bytes where both ends are the
-// same build (glm vectors, Ray, Camera, RenderSettings, Rng).
+// A payload is the call's values (crossing.h), copied as bytes where both
+// ends are the same build (glm vectors, Camera, RenderSettings, Rng).
 //
 // Everything read here may come from hostile code: lengths are bounded, a
 // payload must be read exactly to its end, and anything else breaks the link
@@ -27,47 +27,13 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
-namespace pt::boundary {
+#include "calls.h"
 
-// The calls that cross. Task functions go to the worker; callbacks come back.
-enum class Call : uint16_t {
-  // Part 1
-  GenerateRay = 1,
-  RaytracePixel,
-  TriangleHas,
-  TriangleIntersect,
-  SphereTest,
-  SphereHas,
-  SphereIntersect,
-  // Part 2: a BVH's primitives cross once, when it is built; traversals name it
-  BuildBvh = 10,
-  BoxIntersect,
-  BvhIntersect,
-  BvhHasIntersection,
-  // Scenes (parts 3 and 4): one crosses once, then calls name it
-  DefineScene = 20,
-  // Part 3
-  DiffuseF = 30,
-  DiffuseSampleF,
-  ZeroBounce,
-  DirectHemisphere,
-  DirectImportance,
-  OneBounce,
-  // Part 4
-  AtLeastOneBounce = 40,
-  GlobalIllumination,
-  // Part 5
-  SampleAdaptively = 50,
-  RaytracePixelAdaptive,
-  AllocateSamples,
-  // Callbacks into the verifier
-  EstRadiance = 100,  // PathTracer::est_radiance_global_illumination of the verifier's tracer
-  NextSample,         // the next_sample passed to sample_adaptively
-  TestPrimitive,      // Part 2: a primitive test of a handle, made on the verifier's primitive
-};
+namespace pt::boundary {
 
 constexpr uint32_t kMaxPayload = 64u << 20;
 
@@ -111,6 +77,11 @@ class Writer {
     return *this;
   }
   const std::string& bytes() const { return bytes_; }
+  // A u32 written later at `at` (a length known once what follows is written),
+  // and what was written past `size` taken back.
+  size_t size() const { return bytes_.size(); }
+  void patch(size_t at, uint32_t value) { std::memcpy(bytes_.data() + at, &value, sizeof value); }
+  void truncate(size_t size) { bytes_.resize(size); }
 
  private:
   std::string bytes_;
@@ -118,7 +89,8 @@ class Writer {
 
 class Reader {
  public:
-  explicit Reader(const std::string& bytes) : bytes_(bytes) {}
+  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
+  explicit Reader(std::string&&) = delete;  // the bytes must outlive the reader
   template <class T>
   T get() {
     static_assert(std::is_trivially_copyable_v<T>, "only plain values cross as bytes");
@@ -133,6 +105,8 @@ class Reader {
     value = get<T>();
   }
   std::string get_string(size_t max = 1 << 16);
+  // The same, as a view into the message (valid while its bytes are).
+  std::string_view get_view(size_t max);
   template <class T>
   std::vector<T> get_vector(size_t max) {
     const uint64_t n = get<uint64_t>();
@@ -143,10 +117,13 @@ class Reader {
   }
   // Every payload is read exactly to its end.
   void finish() const;
+  // All of the payload, as received; and all of it taken as read.
+  std::string_view all() const { return bytes_; }
+  void skip_to_end() { at_ = bytes_.size(); }
 
  private:
   void need(size_t n) const;
-  const std::string& bytes_;
+  std::string_view bytes_;
   size_t at_ = 0;
 };
 

@@ -7,15 +7,22 @@
 #include <csignal>
 #include <cstdio>
 
-#include "wire.h"
+#include "worker_link.h"
 
 namespace pt::boundary {
-void serve_task_calls(Link& link);  // serve_partN.cpp: the part's task functions
+
+void serve_task_calls(Link& link);  // serve.cpp: the part's rows of tasks.def
+
+Link& worker_link() {
+  static Link link(4, 3);
+  return link;
+}
+
 }  // namespace pt::boundary
 
 int main() {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);  // not left behind by a verifier that died
-  pt::boundary::Link link(4, 3);
+  pt::boundary::Link& link = pt::boundary::worker_link();
   pt::boundary::serve_task_calls(link);
   try {
     link.hello();

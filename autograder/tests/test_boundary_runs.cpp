@@ -1,9 +1,9 @@
-// Runs of one call across the boundary (boundary/repeated_call.h): the answers
-// a test receives from a run are those it would have received one call at a
-// time, a run is only used while the test repeats the same call from the state
-// the last answer left, and a worker that answers more than it was asked
-// breaks the link. What the runs check of the answers: every state moves
-// forward, and a replayed answer is the same (support/generator_contract.h).
+// Runs of one call across the boundary (boundary/generator_calls.h): the
+// answers a test receives from a run are those it would have received one
+// call at a time, a run is only used while the test repeats the same call from
+// the state the last answer left, and a worker that answers more than it was
+// asked breaks the link. What the runs check of the answers: every state moves
+// forward, and a replayed answer is the same (core/generator_contract.h).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "repeated_call.h"
+#include "generator_calls.h"
 
 namespace pt::boundary {
 namespace {
@@ -42,9 +42,9 @@ struct FakeWorker {
     Reader in(request.bytes());
     const auto arg = in.get<double>();
     Writer run;
-    answer_run<double>(in, run, [&](Rng& rng) {
+    answer_run(in, run, [&](Rng& rng, Writer& answer) {
       if (throw_from && std::memcmp(&rng, throw_from, sizeof(Rng)) == 0) throw std::runtime_error("the student's function threw");
-      return function(arg, rng);
+      answer.put(function(arg, rng));
     });
     in.finish();
     if (extra == 0) return run.bytes();
@@ -52,7 +52,9 @@ struct FakeWorker {
     Reader r(run.bytes());
     Writer out;
     out.put(r.get<uint32_t>() + extra).put_bytes(run.bytes().substr(sizeof(uint32_t)));
-    for (uint32_t i = 0; i < extra; ++i) out.put(0.0).put(Rng());
+    Writer zero;
+    zero.put(0.0);
+    for (uint32_t i = 0; i < extra; ++i) out.put_string(zero.bytes()).put(Rng());
     return out.bytes();
   }
 };
@@ -63,9 +65,26 @@ Writer args_of(double arg) {
   return w;
 }
 
+// The runs of one row whose answer is a double.
+class Runs {
+ public:
+  Runs(Call call, const std::string& task) : calls_(call, task, false) {}
+  Runs(Call call, const std::string& task, uint32_t replay_one_in) : calls_(call, task, false, replay_one_in) {}
+  template <class AskWorker>
+  double next(const Writer& args, Rng& rng, AskWorker&& ask) {
+    Reader r(calls_.next(args, rng, ask));
+    const auto value = r.get<double>();
+    r.finish();
+    return value;
+  }
+
+ private:
+  GeneratorCalls calls_;
+};
+
 TEST(BoundaryRuns, AnswersAreThoseOfOneCallAtATime) {
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Runs runs(Call::DirectImportance, "the estimator", 0);
   Rng across(7), here(7);
   for (int i = 0; i < 5000; ++i) {
     const double got = runs.next(args_of(0.25), across, [&](Call c, const Writer& w) { return worker(c, w); });
@@ -80,7 +99,7 @@ TEST(BoundaryRuns, AnswersAreThoseOfOneCallAtATime) {
 
 TEST(BoundaryRuns, OtherArgumentsOrAnotherGeneratorStartANewRun) {
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Runs runs(Call::DirectImportance, "the estimator", 0);
   auto ask = [&](Call c, const Writer& w) { return worker(c, w); };
   Rng rng(1);
   for (int i = 0; i < 20; ++i) runs.next(args_of(0.25), rng, ask);
@@ -102,7 +121,7 @@ TEST(BoundaryRuns, AnExceptionIsTheCallsThatMeetsIt) {
   for (int i = 0; i < 10; ++i) estimator(0.5, eleventh);
   FakeWorker worker;
   worker.throw_from = &eleventh;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
+  Runs runs(Call::DirectImportance, "the estimator");
   auto ask = [&](Call c, const Writer& w) { return worker(c, w); };
   Rng rng(3), here(3);
   int answered = 0;
@@ -119,13 +138,13 @@ TEST(BoundaryRuns, AnExceptionIsTheCallsThatMeetsIt) {
 TEST(BoundaryRuns, AWorkerThatAnswersMoreThanAskedBreaksTheLink) {
   FakeWorker worker;
   worker.extra = 1;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
+  Runs runs(Call::DirectImportance, "the estimator");
   Rng rng(5);
   EXPECT_THROW(runs.next(args_of(0.5), rng, [&](Call c, const Writer& w) { return worker(c, w); }), LinkBroken);
 }
 
 TEST(BoundaryRuns, AWorkerThatAnswersNothingBreaksTheLink) {
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
+  Runs runs(Call::DirectImportance, "the estimator");
   Rng rng(5);
   Writer nothing;
   nothing.put(uint32_t{0});
@@ -134,7 +153,6 @@ TEST(BoundaryRuns, AWorkerThatAnswersNothingBreaksTheLink) {
 
 // ---- What the runs check of the answers
 
-using test::GeneratorContractBroken;
 
 auto asks(FakeWorker& worker) {
   return [&worker](Call c, const Writer& w) { return worker(c, w); };
@@ -142,7 +160,7 @@ auto asks(FakeWorker& worker) {
 
 // Calls the estimator `calls` times in a loop, as a statistical test does;
 // the message of the contract broken, or "" if none was.
-std::string loop(RepeatedCall<double>& runs, FakeWorker& worker, int calls, double arg = 0.25) {
+std::string loop(Runs& runs, FakeWorker& worker, int calls, double arg = 0.25) {
   Rng rng(11);
   try {
     for (int i = 0; i < calls; ++i) runs.next(args_of(arg), rng, asks(worker));
@@ -154,7 +172,7 @@ std::string loop(RepeatedCall<double>& runs, FakeWorker& worker, int calls, doub
 
 TEST(BoundaryRuns, AnHonestFunctionPassesEveryReplay) {
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 1);  // every run has one replayed
+  Runs runs(Call::DirectImportance, "the estimator", 1);  // every run has one replayed
   EXPECT_EQ(loop(runs, worker, 5000), "");
   EXPECT_EQ(loop(runs, worker, 50, 0.75), "") << "other arguments";
 }
@@ -163,7 +181,7 @@ TEST(BoundaryRuns, AGeneratorMovedBackFailsTheCall) {
   // The shadow-acne estimator's trick: hand back the state from before the
   // test's own draws, so that the test draws the same input again.
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Runs runs(Call::DirectImportance, "the estimator", 0);
   Rng rng(3);
   rng.uniform();  // the test's input
   // Moved back to where it was one draw before it was passed in.
@@ -189,7 +207,7 @@ TEST(BoundaryRuns, AGeneratorReplacedFailsTheCall) {
     rng = Rng(12345, 7);  // another stream
     return v;
   };
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Runs runs(Call::DirectImportance, "the estimator", 0);
   EXPECT_NE(loop(runs, worker, 3).find("moved backwards or replaced"), std::string::npos);
   // The same stream, a state that is not a few draws ahead.
   worker.function = [](double arg, Rng& rng) {
@@ -197,7 +215,7 @@ TEST(BoundaryRuns, AGeneratorReplacedFailsTheCall) {
     rng = Rng(999);
     return v;
   };
-  RepeatedCall<double> again(Call::DirectImportance, "the estimator", 0);
+  Runs again(Call::DirectImportance, "the estimator", 0);
   EXPECT_NE(loop(again, worker, 3).find("moved backwards or replaced"), std::string::npos);
 }
 
@@ -205,7 +223,7 @@ TEST(BoundaryRuns, AGeneratorLeftAloneIsAllowed) {
   // Zero draws is moving forward by zero (an estimator of a point light).
   FakeWorker worker;
   worker.function = [](double arg, Rng&) { return arg * 2.0; };
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 1);
+  Runs runs(Call::DirectImportance, "the estimator", 1);
   EXPECT_EQ(loop(runs, worker, 1000), "");
 }
 
@@ -219,12 +237,12 @@ TEST(BoundaryRuns, RandomnessFromElsewhereFailsAReplay) {
     static Rng own(1);
     return arg + own.uniform();
   };
-  RepeatedCall<double> runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f");
+  Runs runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f");
   EXPECT_NE(loop(runs, worker, 31).find("DiffuseBSDF::sample_f: its answer is not a function of its arguments and the "
                                         "generator passed in"),
             std::string::npos);
   worker.function = [](double arg, Rng& rng) { return estimator(arg, rng) + std::rand() * 1e-12; };
-  RepeatedCall<double> with_rand(Call::DirectImportance, "the estimator");
+  Runs with_rand(Call::DirectImportance, "the estimator");
   EXPECT_NE(loop(with_rand, worker, 31).find("not a function of its arguments"), std::string::npos);
 }
 
@@ -242,7 +260,7 @@ TEST(BoundaryRuns, AnAverageOfEarlierAnswersFailsAReplay) {
     for (double x : raw) sum += x;
     return sum / double(raw.size());
   };
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator");
+  Runs runs(Call::DirectImportance, "the estimator");
   EXPECT_NE(loop(runs, worker, 31).find("not a function of its arguments"), std::string::npos);
 }
 
@@ -252,7 +270,7 @@ TEST(BoundaryRuns, ATestsOwnReplayAsksTheWorkerAgain) {
   // again, alone (one more request each time), and an honest function's run
   // goes on: the same answer and state as the first time.
   FakeWorker worker;
-  RepeatedCall<double> runs(Call::DirectImportance, "the estimator", 0);
+  Runs runs(Call::DirectImportance, "the estimator", 0);
   Rng rng(8);
   for (int i = 0; i < 20; ++i) {
     const Rng copy = rng;
@@ -274,12 +292,90 @@ TEST(BoundaryRuns, ATestsOwnReplaySeesAFunctionOfSomethingElse) {
     rng.uniform();
     return arg + own.uniform();
   };
-  RepeatedCall<double> runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f", 0);
+  Runs runs(Call::DiffuseSampleF, "DiffuseBSDF::sample_f", 0);
   Rng rng(8);
   const Rng copy = rng;
   const double first = runs.next(args_of(0.5), rng, asks(worker));
   Rng again = copy;
   EXPECT_NE(runs.next(args_of(0.5), again, asks(worker)), first);
+}
+
+// ---- Calls that call back (a pixel's samples): one call a run, its replay
+// answered from a tape of the first time's callbacks
+
+// The verifier's callback as the link serves it: through the tape of a call
+// being replayed. It counts what the test's own function is asked, as a
+// scripted tracer counts its samples.
+struct Callbacks {
+  int served = 0;
+  double serve(double x) {
+    Writer args, answer;
+    args.put(x);
+    through_tape(Call::EstRadiance, args.bytes(), answer, [&](Writer& a) {
+      ++served;
+      a.put(2.0 * x);
+    });
+    Reader r(answer.bytes());
+    return r.get<double>();
+  }
+};
+
+// A pixel loop: n samples, each a callback with a number drawn from the
+// generator; `extra` is added to the callbacks' arguments (a function of
+// something else when it changes between calls).
+std::string pixel_run(const Writer& request, Callbacks& callbacks, const std::function<double()>& extra) {
+  Reader in(request.bytes());
+  const auto n = in.get<int>();
+  Writer out;
+  answer_run(in, out, [&](Rng& rng, Writer& answer) {
+    double sum = 0;
+    for (int i = 0; i < n; ++i) sum += callbacks.serve(rng.uniform() + extra());
+    answer.put(sum);
+  });
+  in.finish();
+  return out.bytes();
+}
+
+TEST(BoundaryRuns, ACallThatCallsBackIsReplayedFromItsTape) {
+  // Every call replayed (one in one): the replay's callbacks are answered
+  // from the record, so the test's function is asked only for the calls it
+  // made; each call is a run of one.
+  Callbacks callbacks;
+  GeneratorCalls runs(Call::RaytracePixel, "PathTracer::raytrace_pixel", true, 1);
+  Writer args;
+  args.put(8);
+  Rng rng(4);
+  int requests = 0;
+  for (int i = 0; i < 10; ++i) {
+    runs.next(args, rng, [&](Call, const Writer& w) {
+      ++requests;
+      return pixel_run(w, callbacks, [] { return 0.0; });
+    });
+  }
+  EXPECT_EQ(callbacks.served, 10 * 8) << "the replays' callbacks came from the tape";
+  EXPECT_EQ(requests, 20) << "a run of one and its replay, for each call";
+}
+
+TEST(BoundaryRuns, AReplayWhoseCallbacksDifferFailsTheCall) {
+  // The same answer and state, but the callbacks' arguments depend on a count
+  // kept between calls: not a function of the arguments and the generator.
+  Callbacks callbacks;
+  GeneratorCalls runs(Call::RaytracePixel, "PathTracer::raytrace_pixel", true, 1);
+  Writer args;
+  args.put(4);
+  Rng rng(4);
+  int calls = 0;
+  try {
+    runs.next(args, rng, [&](Call, const Writer& w) {
+      ++calls;
+      return pixel_run(w, callbacks, [&] { return calls == 1 ? 0.0 : 1e-9; });
+    });
+    FAIL() << "a replay that made other callbacks passed";
+  } catch (const GeneratorContractBroken& e) {
+    EXPECT_NE(std::string(e.what()).find("PathTracer::raytrace_pixel: its answer is not a function of its arguments"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

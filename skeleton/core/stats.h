@@ -34,4 +34,13 @@ inline WorkCounters take_work_counters() {
   return c;
 }
 
+// Whether the primitive tests of the query running now on this thread are
+// read one by one (a test counting a BVH query's work sets it). Where nothing
+// reads them, the grader's process boundary may answer several primitive
+// tests with one message (autograder/boundary/README.md, "BVHs").
+inline bool& primitive_tests_read() {
+  thread_local bool read = false;
+  return read;
+}
+
 }  // namespace pt

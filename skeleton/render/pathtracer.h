@@ -44,6 +44,13 @@ class PathTracer {
   Spectrum estimate_direct_lighting_importance(const Ray& r, const Intersection& isect, Rng& rng) const;
   // P3T5: one of the two above, as settings.direct_hemisphere_sample says.
   Spectrum one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng) const;
+  // P3T6 (an extension, zero points unless your instructor counts it): direct
+  // lighting by multiple importance sampling (handouts/part3.md, section 13).
+  // For each of settings.ns_area_light rounds, one sample of every light with
+  // an area (sample_L) and one of the BSDF (sample_f), each weighted by the
+  // balance heuristic, pdf / (the sum of every such light's pdf + the BSDF's
+  // cosine pdf) at its direction; a delta light's one exact sample as P3T4.
+  Spectrum estimate_direct_lighting_mis(const Ray& r, const Intersection& isect, Rng& rng) const;
 
   // ---- Part 4 ----
   // P4T1/P4T2: direct light plus recursively sampled indirect light with

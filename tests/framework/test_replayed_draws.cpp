@@ -19,8 +19,6 @@
 namespace pt {
 namespace {
 
-using test::GeneratorContractBroken;
-
 // A stand-in for an estimator: how many numbers it draws depends on them.
 Spectrum honest(Rng& rng) {
   double v = rng.uniform();
@@ -94,7 +92,7 @@ TEST(ReplayedDraws, AGeneratorMovedBackOrReplacedFails) {
     const Spectrum L = honest(rng);
     pcg32 engine;
     std::memcpy(static_cast<void*>(&engine), &rng, sizeof engine);
-    engine.backstep(*test::draws_between(given, rng) + 1);
+    engine.backstep(*draws_between(given, rng) + 1);
     std::memcpy(static_cast<void*>(&rng), &engine, sizeof engine);
     return L;
   });

@@ -372,6 +372,21 @@ TEST(VarianceRatio, NormalSamples) {
   EXPECT_NEAR(stats::compare_variances(a, b).log_ratio_se, std::sqrt(4.0 / 1e5), 3e-4);
 }
 
+TEST(VarianceRatio, AtMostAKnownBound) {
+  // sd 2: variance 4. n = 1e5: se(log s^2) = sqrt(2 / 1e5) = 0.0045, so a
+  // bound of 4.1 (log ratio -0.025) holds, 3.8 (+0.051, z = 11) is rejected.
+  Normal normal(test::seed(21));
+  RunningStats a;
+  for (int i = 0; i < 100000; ++i) a.add(2.0 * normal());
+  EXPECT_TRUE(stats::check(stats::variance_at_most(a, 4.1, 1e-5, "4 <= 4.1")));
+  EXPECT_TRUE(stats::check(stats::variance_at_most(a, 1e3, 1e-5, "4 <= 1000")));
+  EXPECT_FALSE(stats::check(stats::variance_at_most(a, 3.8, 1e-5, "4 <= 3.8")));
+  EXPECT_NEAR(stats::variance_at_most(a, 4.0, 1e-5).log_ratio_se, std::sqrt(2.0 / 1e5), 2e-4);
+  RunningStats constant;
+  for (int i = 0; i < 10; ++i) constant.add(1.5);
+  EXPECT_TRUE(stats::check(stats::variance_at_most(constant, 1e-12, 1e-5, "a constant")));
+}
+
 TEST(VarianceRatio, StaysCalibratedForHeavyTailedSamplesWhereTheFTestDoesNot) {
   // Equal variances, exponential samples (kurtosis 9), n = 2000 each, 1000
   // repetitions at level 0.05. The log-ratio test has Var(log s^2) ~ 8/n and

@@ -172,3 +172,67 @@ pt_mutant(3 one_bounce_copies_rng ${ref}
   [[Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng) const {]]
   [[Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect, Rng& rng_in) const {
   Rng rng = rng_in;]])
+
+# ---- P3T6, the extension: multiple importance sampling (test_mis.cpp)
+# BSDF samples added with weight 1 beside weighted light samples: the weights
+# of a direction no longer sum to one (the light counted up to twice). Caught
+# by MisLighting.MatchesLambertForAreaLights.
+pt_mutant(3 mis_bsdf_samples_unweighted ${ref}
+  [[L += f * Li * local.z / bsdf_pdf * (bsdf_pdf / densities(dir, local)) / double(m);]]
+  [[L += f * Li * local.z / bsdf_pdf / double(m);]])
+# A wrong pdf in one strategy's weight: the light samples weighed against the
+# uniform hemisphere's density, the BSDF samples against the cosine one that
+# drew them; the two weights of a direction no longer sum to one. Caught by
+# MisLighting.MatchesLambertForAreaLights.
+pt_mutant(3 mis_light_weight_uniform_pdf ${ref}
+  [[const double weight = delta ? 1.0 : light_pdf / densities(dir, local);]]
+  [[const double weight = delta ? 1.0 : light_pdf / (light_pdf + pdf_uniform_hemisphere(local));]])
+# A light sample blocked by an emitter counted as dark, where a BSDF sample in
+# the same direction sees the emitter: the two strategies estimate different
+# things (the sky's samples hidden by the area lights). Caught by
+# MisLighting.SumsOverLightsAndSeesEmittersThatAreNoLights.
+pt_mutant(3 mis_light_sample_shadowed_by_emitters ${ref}
+  [[Li = arriving(dir, dist - kRayEpsilon, Le);]]
+  [[Li = arriving(dir, dist - kRayEpsilon, Le) == Le ? Le : Spectrum(0.0);]])
+# Light sampling alone, unweighted (P3T4's estimator): unbiased, and its
+# variance under a large light just above the surface thousands of times the
+# bound. Caught by MisLighting.NoWorseThanBsdfSamplingForALargeDimLight.
+pt_mutant(3 mis_light_sampling_alone ${ref}
+  [[      const double weight = delta ? 1.0 : light_pdf / densities(dir, local);
+      L += isect.bsdf->f(wo, local) * Li * local.z / light_pdf * weight / double(n);
+    }
+  }
+  for (int i = 0; i < m; ++i) {]]
+  [[      const double weight = 1.0;
+      L += isect.bsdf->f(wo, local) * Li * local.z / light_pdf * weight / double(n);
+    }
+  }
+  for (int i = 0; i < 0; ++i) {]])
+# BSDF sampling alone, unweighted, the delta lights kept: unbiased, and its
+# variance under a small bright light thousands of times the bound. Caught by
+# MisLighting.NoWorseThanLightSamplingForASmallBrightLight.
+pt_mutant(3 mis_bsdf_sampling_alone ${ref}
+  [[      const double weight = delta ? 1.0 : light_pdf / densities(dir, local);
+      L += isect.bsdf->f(wo, local) * Li * local.z / light_pdf * weight / double(n);
+    }
+  }
+  for (int i = 0; i < m; ++i) {
+    Vec3 local;
+    double bsdf_pdf;
+    const Spectrum f = isect.bsdf->sample_f(wo, &local, &bsdf_pdf, rng);
+    if (bsdf_pdf <= 0.0 || local.z <= 0.0) continue;
+    const Vec3 dir = frame.to_world(local);
+    const Spectrum Li = arriving(dir, kInf, scene->background(dir));
+    L += f * Li * local.z / bsdf_pdf * (bsdf_pdf / densities(dir, local)) / double(m);]]
+  [[      const double weight = delta ? 1.0 : 0.0;
+      L += isect.bsdf->f(wo, local) * Li * local.z / light_pdf * weight / double(n);
+    }
+  }
+  for (int i = 0; i < m; ++i) {
+    Vec3 local;
+    double bsdf_pdf;
+    const Spectrum f = isect.bsdf->sample_f(wo, &local, &bsdf_pdf, rng);
+    if (bsdf_pdf <= 0.0 || local.z <= 0.0) continue;
+    const Vec3 dir = frame.to_world(local);
+    const Spectrum Li = arriving(dir, kInf, scene->background(dir));
+    L += f * Li * local.z / bsdf_pdf / double(m);]])

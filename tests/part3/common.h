@@ -65,11 +65,12 @@ inline Lit make_lit(const Vec3& p, const Vec3& n, const std::function<void(Scene
   return l;
 }
 
-enum class Method { Hemisphere, Importance, OneBounce };
+enum class Method { Hemisphere, Importance, OneBounce, Mis };
 
 inline const char* name(Method m) {
-  return m == Method::Hemisphere ? "estimate_direct_lighting_hemisphere"
+  return m == Method::Hemisphere   ? "estimate_direct_lighting_hemisphere"
          : m == Method::Importance ? "estimate_direct_lighting_importance"
+         : m == Method::Mis        ? "estimate_direct_lighting_mis"
                                    : "one_bounce_radiance";
 }
 
@@ -81,6 +82,7 @@ inline Spectrum estimate(const PathTracer& t, const Ray& ray, const Intersection
     switch (m) {
       case Method::Hemisphere: return t.estimate_direct_lighting_hemisphere(fresh, isect, r);
       case Method::Importance: return t.estimate_direct_lighting_importance(fresh, isect, r);
+      case Method::Mis: return t.estimate_direct_lighting_mis(fresh, isect, r);
       default: return t.one_bounce_radiance(fresh, isect, r);
     }
   });
@@ -126,6 +128,13 @@ inline stats::RunningStats run(const Lit& lit, Method m, const RenderSettings& s
 // lambert_cases() at height 1, radiance 5, above a receiver facing it.
 inline Lit moderate_light() {
   return make_lit({0, 0, 0}, {0, 0, 1}, [](Scene& s) { s.add_area_light(Spectrum(5.0), {0, 0, 1}, {0.8, 0, 0}, {0, -0.6, 0}); });
+}
+
+// A 0.05 x 0.05 light 192 times brighter: the same irradiance (to 2%) from
+// a light of 1/192 the solid angle (0.0025 sr, 4e-4 of the hemisphere).
+inline Lit small_bright_light() {
+  return make_lit({0, 0, 0}, {0, 0, 1},
+                  [](Scene& s) { s.add_area_light(Spectrum(5.0 * 192), {0, 0, 1}, {0.05, 0, 0}, {0, -0.05, 0}); });
 }
 
 // Radiance a ray from `from` towards `to` sees emitted by the first surface hit.

@@ -18,13 +18,6 @@ namespace {
 
 using namespace test::part3;
 
-// A 0.05 x 0.05 light 192 times brighter: the same irradiance (to 2%) from
-// a light of 1/192 the solid angle (0.0025 sr, 4e-4 of the hemisphere).
-Lit small_bright_light() {
-  return make_lit({0, 0, 0}, {0, 0, 1},
-                  [](Scene& s) { s.add_area_light(Spectrum(5.0 * 192), {0, 0, 1}, {0.05, 0, 0}, {0, -0.05, 0}); });
-}
-
 // ---- Uniform hemisphere sampling cannot see delta lights -----------------------
 
 // Exact: any non-zero estimate fails.

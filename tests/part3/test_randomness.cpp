@@ -53,5 +53,9 @@ GRADED_TEST(DirectRandomness, OneBounceDrawsOnlyFromItsRng, "P3T5", 0.5, Visible
   check_estimator(Method::OneBounce, settings_with(4, true), 3624);
 }
 
+GRADED_EXTENSION_TEST(DirectRandomness, MisDrawsOnlyFromItsRng, "P3T6", 0.5, Visible) {
+  check_estimator(Method::Mis, settings_with(4), 3625);
+}
+
 }  // namespace
 }  // namespace pt

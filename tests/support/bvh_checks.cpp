@@ -334,13 +334,14 @@ CountedBVH::CountedBVH(const std::vector<const Primitive*>& prims, size_t max_le
 CountedBVH::~CountedBVH() = default;
 
 namespace {
-thread_local bool g_work_read = false;
-
-// For the life of the object, whether the query's work is read.
+// For the life of the object, whether the query's work is read
+// (core/stats.h: across the process boundary every primitive test of such a
+// query is seen one at a time; in the others, whose counts nothing reads, the
+// verifier may answer a leaf's tests together).
 class WorkRead {
  public:
-  explicit WorkRead(bool read) : previous_(g_work_read) { g_work_read = read; }
-  ~WorkRead() { g_work_read = previous_; }
+  explicit WorkRead(bool read) : previous_(primitive_tests_read()) { primitive_tests_read() = read; }
+  ~WorkRead() { primitive_tests_read() = previous_; }
   WorkRead(const WorkRead&) = delete;
   WorkRead& operator=(const WorkRead&) = delete;
 
@@ -348,8 +349,6 @@ class WorkRead {
   bool previous_;
 };
 }  // namespace
-
-bool query_work_is_read() { return g_work_read; }
 
 bool CountedBVH::closest(const Ray& r, Intersection* isect, QueryWork* work,
                          std::vector<int>* leaves_in_order) const {

@@ -79,6 +79,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/bvh.h"
+#include "geometry/counted.h"
 
 namespace pt::test::p2 {
 
@@ -142,7 +143,7 @@ struct TestEvent {
   bool hit;
 };
 
-class CountingPrimitive : public Primitive {
+class CountingPrimitive : public ForwardingPrimitive {
  public:
   CountingPrimitive(const Primitive* inner, size_t index, std::vector<TestEvent>* log)
       : inner_(inner), index_(index), log_(log) {}
@@ -158,6 +159,7 @@ class CountingPrimitive : public Primitive {
     log_->push_back({index_, h});
     return h;
   }
+  const Primitive& wrapped() const override { return *inner_; }
   const Primitive* inner() const { return inner_; }
   size_t index() const { return index_; }
 
@@ -219,13 +221,6 @@ class WorkMeter {
 // The framework traversal's work on a framework-built tree over the wrappers
 // of `meter` (build with build_framework_bvh(meter.wrapped(), ...)).
 WorkTotals framework_work(const WorkMeter& meter, const FlatTree& tree, const std::vector<Ray>& rays);
-
-// Whether the query running now on this thread has its work read (closest()
-// or any() asked for a QueryWork or the leaves entered). Across the process
-// boundary every primitive test of such a query is seen one at a time; in
-// the others, whose counts nothing reads, the verifier may answer a leaf's
-// tests together (autograder/boundary/README.md).
-bool query_work_is_read();
 
 // The student's BVHAccel built over counting wrappers of `prims`.
 class CountedBVH {

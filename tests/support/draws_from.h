@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/rng.h"
-#include "support/generator_contract.h"
+#include "core/generator_contract.h"
 
 namespace pt::test {
 
@@ -24,7 +24,7 @@ namespace pt::test {
 // `calls` must make a generator of the task's own visible: one call where the
 // answer is continuous, enough where it is one of a few values (a roulette
 // coin of probability 1/2: 64 calls, all alike by chance with probability
-// 2^-64). The generators' states are compared exactly (generator_contract.h),
+// 2^-64). The generators' states are compared exactly (core/generator_contract.h),
 // so a correct task never fails.
 template <class Call>
 ::testing::AssertionResult draws_only_from(const Call& call, uint64_t seed, int calls, const std::string& what) {

@@ -22,6 +22,7 @@
 
 #include "core/ray.h"
 #include "geometry/intersection.h"
+#include "scene/path_guard.h"
 #include "scene/scene.h"
 #include "support/scene_builders.h"
 
@@ -32,34 +33,17 @@ using test::Aim;  // support/scene_builders.h
 // ---------------------------------------------------------------------------
 // Path guard
 
-// BSDF samples taken since the last reset(), on this thread, and the number
-// allowed. A correct estimator samples a BSDF at most once per path vertex,
-// i.e. at most max_ray_depth times per camera path (it has no reason to
-// sample at the last vertex, and may); with Russian roulette of continuation
-// probability p < 1, a path also survives k bounces past the first only with
-// probability p^k. See guard_limit.
-struct PathGuard {
-  int64_t samples = 0;
-  int64_t limit = 1 << 20;
-  std::string why;
-  void reset(int64_t new_limit, std::string reason) {
-    samples = 0;
-    limit = new_limit;
-    why = std::move(reason);
-  }
-  void count() {
-    if (++samples > limit)
-      throw std::runtime_error("path guard: one estimate sampled a BSDF more than " + std::to_string(limit) +
-                               " times (" + why +
-                               "): is r.depth decremented at every bounce, does the recursion stop when it runs out, "
-                               "and does Russian roulette end paths with probability 1 - rr_continue_prob?");
-  }
-};
-
-inline PathGuard& path_guard() {
-  thread_local PathGuard g;
-  return g;
-}
+// The guard and the BSDFs that count in it are the framework's
+// (scene/path_guard.h), so that the grader's worker rebuilds the same ones.
+// A correct estimator samples a BSDF at most once per path vertex, i.e. at
+// most max_ray_depth times per camera path (it has no reason to sample at the
+// last vertex, and may); with Russian roulette of continuation probability
+// p < 1, a path also survives k bounces past the first only with probability
+// p^k. See guard_limit.
+using pt::GuardedDiffuse;
+using pt::NormalMirror;
+using pt::path_guard;
+using pt::PathGuard;
 
 // The limit for an estimate with max_ray_depth = m and continuation
 // probability p: twice what a correct solution may take (2 m + 2), capped at
@@ -82,31 +66,6 @@ inline std::string guard_reason(int max_ray_depth, double rr_continue_prob) {
   os << "max_ray_depth " << max_ray_depth << ", rr_continue_prob " << rr_continue_prob;
   return os.str();
 }
-
-// Lambertian (the student's P3T1 when it is the student's binary; in the
-// Part 4 binaries, the reference) that counts its samples in the guard. It
-// holds the diffuse BSDF rather than being one: a qualified call
-// `DiffuseBSDF::sample_f` on it, which skips a subclass's override, has no
-// DiffuseBSDF to reach (a dynamic_cast finds none), so every sample counts.
-// Across the process boundary the worker rebuilds this and NormalMirror as
-// copies of its own (autograder/boundary/path_guard_copy.h: it may hold
-// nothing of the tests); a change here is made there too.
-class GuardedDiffuse : public BSDF {
- public:
-  explicit GuardedDiffuse(const Spectrum& albedo, const Spectrum& emission = Spectrum(0.0))
-      : lambertian_(albedo, emission) {}
-  Spectrum f(const Vec3& wo, const Vec3& wi) const override { return lambertian_.f(wo, wi); }
-  Spectrum sample_f(const Vec3& wo, Vec3* wi, double* pdf, Rng& rng) const override {
-    path_guard().count();
-    return lambertian_.sample_f(wo, wi, pdf, rng);
-  }
-  Spectrum get_emission(const Vec3& wo) const override { return lambertian_.get_emission(wo); }
-  Spectrum albedo() const { return lambertian_.reflectance; }
-  Spectrum emission() const { return lambertian_.emission; }
-
- private:
-  DiffuseBSDF lambertian_;
-};
 
 // ---------------------------------------------------------------------------
 // White furnace
@@ -169,23 +128,8 @@ inline Aim furnace_aim(const Scene& s) { return aim(s, {0.1, -0.2, 0.3}, {0.2, 0
 // ---------------------------------------------------------------------------
 // Mirror chain
 
-// A "normal mirror": a delta BSDF that sends all light along the surface
-// normal. sample_f returns wi = (0, 0, 1) with pdf 1 and value 1, so that
-// f cos / pdf = 1 exactly (the delta-BSDF convention: pdf reported as 1, the
-// weight folded into f). f() of any other pair is 0 (within 1e-9 of the normal
-// it is 1, so that re-evaluating f at the sampled direction agrees), so
-// direct light at a mirror is exactly zero: a mirror vertex passes light on
-// but never gathers any. Counts its samples in the path guard.
-class NormalMirror : public BSDF {
- public:
-  Spectrum f(const Vec3&, const Vec3& wi) const override { return Spectrum(wi.z > 1.0 - 1e-9 ? 1.0 : 0.0); }
-  Spectrum sample_f(const Vec3&, Vec3* wi, double* pdf, Rng&) const override {
-    path_guard().count();
-    *wi = Vec3(0, 0, 1);
-    *pdf = 1.0;
-    return Spectrum(1.0);
-  }
-};
+// NormalMirror (scene/path_guard.h): all light along the surface normal,
+// f cos / pdf = 1 exactly, and direct light at a mirror exactly zero.
 
 // mirrors >= 1 normal mirrors at P_1 .. P_mirrors on a zig-zag in the y = 0
 // plane, P_k = (0.5 k, 0, k odd ? 0 : 1), each 0.2 x 0.2 and facing P_{k+1}

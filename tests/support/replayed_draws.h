@@ -1,14 +1,14 @@
 #pragma once
 // How the statistical tests call a task that draws from a generator: as what
 // it is specified to be, a function of its arguments and of the generator
-// passed in (generator_contract.h). Each call must move the generator forward,
+// passed in (core/generator_contract.h). Each call must move the generator forward,
 // and one call in kReplayedOneIn is made a second time from a copy of the same
 // state and must give the same answer and leave the same state. A task whose
 // randomness comes from anywhere else (a static generator, std::rand, a cache
 // of earlier answers that it averages) fails the test that called it, saying
 // so, in the tests' own process as across the grader's boundary, which
 // replays calls of its own where the worker cannot predict them
-// (autograder/boundary/repeated_call.h): a call it answers that way is not
+// (autograder/boundary/generator_calls.h): a call it answers that way is not
 // replayed here again.
 //
 // A test's power does not depend on how many numbers a task draws: only the
@@ -17,7 +17,7 @@
 #include <string>
 #include <type_traits>
 
-#include "support/generator_contract.h"
+#include "core/generator_contract.h"
 #include "support/seed.h"
 
 namespace pt::test {

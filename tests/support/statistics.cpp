@@ -285,6 +285,19 @@ VarianceRatioResult variance_ratio_at_least(const RunningStats& a, const Running
                              [](double z) { return z >= 0.0 ? 1.0 : normal_cdf(z); });
 }
 
+VarianceRatioResult variance_at_most(const RunningStats& a, double bound, double alpha, const std::string& what) {
+  VarianceRatioResult r = compare_variances(a, RunningStats());
+  r.var_b = bound;
+  r.ratio = a.variance() / bound;
+  r.what = what + " [H0: Var(A) <= " + fmt(bound) + ", a bound known exactly, one-sided]";
+  r.hypothesis = 1.0;
+  r.alpha = alpha;
+  r.statistic = log_ratio_z(r);
+  // Evidence against H0 lies in the upper tail only.
+  r.p_value = r.nonfinite > 0 ? 0.0 : (r.statistic <= 0.0 ? 1.0 : normal_sf(r.statistic));
+  return r;
+}
+
 VarianceRatioResult variance_ratio_equals(const RunningStats& a, const RunningStats& b, double factor, double alpha,
                                           const std::string& what) {
   return variance_ratio_test(a, b, factor, alpha, what + " [H0: Var(A)/Var(B) = " + fmt(factor) + ", two-sided]",

@@ -198,6 +198,12 @@ VarianceRatioResult compare_variances(const RunningStats& a, const RunningStats&
 // ratio is at least factor therefore fails with probability at most alpha.
 VarianceRatioResult variance_ratio_at_least(const RunningStats& a, const RunningStats& b, double factor,
                                             double alpha, const std::string& what = "");
+// H0 "Var(A) <= bound" for a bound known exactly (a closed form, a
+// quadrature), one-sided: rejected only when the data show at level alpha
+// that the variance is above it, i.e. when log(s^2) - z_{1-alpha} se >
+// log(bound), se = the standard error of log(s^2) from A's fourth moment
+// (reported as Var(B) = bound, n_B = 0).
+VarianceRatioResult variance_at_most(const RunningStats& a, double bound, double alpha, const std::string& what = "");
 // H0 "Var(A) / Var(B) = factor", two-sided.
 VarianceRatioResult variance_ratio_equals(const RunningStats& a, const RunningStats& b, double factor, double alpha,
                                           const std::string& what = "");

@@ -17,18 +17,25 @@
 //                      limit and pt-grade, on its own clock, ends the run: the
 //                      verdict stays the grader's.
 //
-// The key reaches this program on a pipe, never in argv or the environment
-// (which a static initializer can read), and is taken from .preinit_array:
-// the dynamic loader runs those entries before every static initializer, and
-// this file is linked first, so no code of a task file runs while the key is
-// still in its descriptor. What that does and does not stop is in the
-// grader's threat model (the README of pt-grade, in instructors' copies).
+// The key reaches this program on a pipe, never in argv or the environment,
+// and is taken from .preinit_array, the first code the dynamic loader runs
+// (this file is linked first). Under pt-grade every part is graded across
+// the process boundary: this process holds no task's code, and the key is
+// depth behind the sandbox against a worker that reaches this process's
+// descriptors from outside (through /proc/PID/fd, where no PID namespace and
+// no Landlock keep it away): the process makes itself undumpable at the same
+// moment, which closes /proc/PID/fd and /proc/PID/mem to other processes of
+// its user, and the key is gone from its pipe. In a binary with the task's
+// code in it (pt-grade run --binary, a convenience) the key is only as safe
+// as that code lets it be. The grader's threat model says more (the README of
+// pt-grade, in instructors' copies).
 #include <dirent.h>
 #include <dlfcn.h>
 #include <execinfo.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -74,6 +81,7 @@ void take_channel(int argc, char** argv, char**) {
     int verdicts = -1, key = -1;
     char extra;
     if (std::sscanf(argv[i], "--pt_channel=%d,%d%c", &verdicts, &key, &extra) != 2) continue;
+    ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
     size_t got = 0;
     while (is_fifo(key) && got < kKeyLength) {
       const ssize_t n = ::read(key, g_channel_key + got, kKeyLength - got);

@@ -7,7 +7,7 @@
 // primitive through its box and keeps, for each, the Triangle or Sphere a hit
 // names; the closest-hit query then scans every primitive, linearly, testing
 // the recovered shapes directly and only the rest through the primitive it was
-// given (those whose box the ray enters). The worker now holds handles (autograder/boundary/serve_part2.cpp): a
+// given (those whose box the ray enters). The worker now holds handles (autograder/boundary/bvh_worker.cpp): a
 // hit names the handle, no shape is recovered, and every test of the scan is a
 // call back to the verifier, counted there: the scan loses what a scan of
 // every box the ray enters loses (no pruning, no order), and nothing more. (The probes run at the first query of each tree,

@@ -47,10 +47,11 @@ void write_all(int fd, const char* at, size_t n) {
   }
 }
 
-// The old answer of BvhIntersect (call 12) or BvhHasIntersection (13): hit,
-// the ray's range, for 12 the hit record (t, n, barycentric, primitive, BSDF),
-// the node visits, then the log: its count and its tests.
-size_t before_log(uint16_t call) { return 1 + 16 + (call == 12 ? 8 + 24 + 24 + 8 + 1 : 0) + 8; }
+// The old answer of BvhIntersect (call 203, once 12) or BvhHasIntersection
+// (202, once 13): hit, the ray's range, for 203 the hit record (t, n,
+// barycentric, primitive, BSDF), the node visits, then the log: its count and
+// its tests.
+size_t before_log(uint16_t call) { return 1 + 16 + (call == 203 ? 8 + 24 + 24 + 8 + 1 : 0) + 8; }
 
 void relay(int from, int to) {
   for (;;) {
@@ -63,7 +64,7 @@ void relay(int from, int to) {
     std::string payload(length, '\0');
     if (!read_all(from, payload.data(), length)) return;
     const bool answer = header[4] == 2;
-    if (answer && (call == 12 || call == 13) && payload.size() >= before_log(call) + 8) {
+    if (answer && (call == 203 || call == 202) && payload.size() >= before_log(call) + 8) {
       payload.resize(before_log(call));
       payload.append(8, '\0');  // an empty log
       length = static_cast<uint32_t>(payload.size());

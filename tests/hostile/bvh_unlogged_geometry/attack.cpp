@@ -1,6 +1,6 @@
 // Hostile: the tests count a traversal's work by the primitive tests they see
 // (tests/support/bvh_checks.h); across the process boundary each is a call
-// back to the verifier (autograder/boundary/serve_part2.cpp). This closest-hit
+// back to the verifier (autograder/boundary/bvh_worker.cpp). This closest-hit
 // query tests every primitive, linearly, and hides the work: it casts each
 // primitive to the Triangle or Sphere it hopes lies behind it and calls that
 // class's own intersect, which no counter sees. The primitives it is given

@@ -1,9 +1,12 @@
 // Hostile: Part 4's tests count the BSDF samples of each path in a path guard,
 // which stops a path longer than roulette lets one be (tests/support/
-// part4_scenes.h). Across the process boundary the worker's copies of the
-// tests' BSDFs count in a guard of the worker's (path_guard_copy()), an inline
-// function that any object of the worker may define too: this one does, with
-// the same layout, and empties the guard after every sample. Its paths have
+// part4_scenes.h). When this case was written, the worker's copies of the
+// tests' BSDFs counted in a guard of the worker's (path_guard_copy(), in
+// pt::boundary), an inline function that any object of the worker could
+// define too: this one does, with the same layout, and empties the guard after
+// every sample. (The guard is now the framework's, scene/path_guard.h, and
+// rr_framework_guard_reset empties that one; this definition, in the
+// boundary's namespace, does not build: pt-link-guard refuses it.) Its paths have
 // no roulette at depths 6 to 1000 with p <= 0.5 (elsewhere they keep it, so
 // that only what roulette's tests see is at stake, not the time limits of
 // the Cornell box, depth 5, of Furnace.FullEstimate, p >= 0.7, or of the
@@ -20,7 +23,7 @@
 #include "render/settings.h"
 
 namespace pt::boundary {
-struct PathGuardCopy {  // the layout of autograder/boundary/path_guard_copy.h, copied
+struct PathGuardCopy {  // the layout of the boundary's old path_guard_copy.h, copied
   int64_t samples = 0;
   int64_t limit = INT64_MAX;
 };

@@ -33,4 +33,8 @@ Spectrum PathTracer::one_bounce_radiance(const Ray& r, const Intersection& isect
   throw NotImplemented("P3T5 PathTracer::one_bounce_radiance");
 }
 
+Spectrum PathTracer::estimate_direct_lighting_mis(const Ray& r, const Intersection& isect, Rng& rng) const {
+  throw NotImplemented("P3T6 PathTracer::estimate_direct_lighting_mis");
+}
+
 }  // namespace pt

@@ -2,13 +2,14 @@
 // What every task that takes a generator is specified to be: a function of its
 // arguments and of the generator passed in, which it moves forward by the
 // numbers it draws and in no other way. Two checks follow, made wherever such
-// a task is called (replayed_draws.h in the tests' own process, the boundary's
-// runs and pixel calls across it) and failing with the messages below:
+// a task is called (the tests' own replays in one process,
+// tests/support/replayed_draws.h; the grader's process boundary across it)
+// and failing with the messages below:
 //   - the state handed back is the given one advanced by a bounded number of
 //     draws (not moved back, not replaced);
 //   - the same call from a copy of the same state gives the same answer and
 //     the same state (no randomness from anywhere else).
-// No gtest here: the boundary's worker compiles the header that includes it.
+// In the framework because both the tests and the grader's boundary check it.
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -19,7 +20,7 @@
 
 #include "core/rng.h"
 
-namespace pt::test {
+namespace pt {
 
 // More draws than any one call of the course makes (2^40: hours of drawing
 // and nothing else). A generator moved back by k reads as 2^64 - k draws
@@ -70,10 +71,10 @@ bool same_bits(const Answer& a, const Answer& b) {
 
 // Set by the grader's boundary when it answers a call from a run that it
 // checks itself, by replays the worker cannot predict
-// (autograder/boundary/repeated_call.h); replayed_draws.h then leaves that
-// call's replay to it. Across the boundary a replay is a round trip: the
+// (autograder/boundary/generator_calls.h); the tests' own replays then leave
+// that call to it. Across the boundary a replay is a round trip: the
 // tests' own replays on top of the boundary's were most of the time of Part
 // 3's and Part 4's statistical tests there, and checked nothing more.
 inline thread_local bool replayed_by_the_boundary = false;
 
-}  // namespace pt::test
+}  // namespace pt
