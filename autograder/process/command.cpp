@@ -1,90 +1,66 @@
 #include "process/command.h"
 
-#include <poll.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
+#include <signal.h>
 #include <unistd.h>
 
-#include <signal.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <thread>
+
+#include "process/launcher.h"
 
 namespace pt::grade {
 
 namespace {
 
-int exit_code(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status); }
-
 int run(const std::vector<std::string>& argv, std::string* output, double kill_after, const CommandOptions& options) {
   if (argv.empty()) return -1;
-  int fds[2];
-  if (::pipe(fds) != 0) return -1;
-  std::fflush(nullptr);  // what this process buffered must not come out twice
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    ::dup2(output ? fds[1] : 2, 1);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    if (options.parent_death_signal != 0) {
-      ::prctl(PR_SET_PDEATHSIG, options.parent_death_signal);
-      if (::getppid() != parent) ::_exit(128 + options.parent_death_signal);  // it died before the line above
-    }
-    if (options.in_child) {
-      const std::string error = options.in_child();
+  Pipe out;
+  if (!out.open()) return -1;
+  // Built before the start: the child only places descriptors and execs.
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const int out_fd = output ? out.write.get() : 2;
+  const std::function<std::string()>& in_child = options.in_child;
+  LaunchOptions launch;
+  launch.parent_death_signal = options.parent_death_signal;
+  launch.child_ends = {out.write.release()};
+  Child child(launch, [&] {
+    ::dup2(out_fd, 1);
+    if (in_child) {
+      const std::string error = in_child();
       if (!error.empty()) {
         std::fprintf(stderr, "%s\n", error.c_str());
         ::_exit(126);
       }
     }
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
     ::execvp(args[0], args.data());
     ::_exit(127);
-  }
-  ::close(fds[1]);
-  int status = 0;
+  });
+  if (!child.started()) return -1;
+  const auto start = Child::Clock::now();
+  std::vector<Stream> streams{{out.read.get(), [&](const char* data, size_t n) {
+                                 if (output && output->size() < options.max_output)
+                                   output->append(data, std::min(n, options.max_output - output->size()));
+                               }}};
   if (kill_after > 0 && !output) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(kill_after);
-    while (::waitpid(pid, &status, WNOHANG) == 0) {
-      if (std::chrono::steady_clock::now() >= end) ::kill(pid, SIGKILL);
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    ::close(fds[0]);
-    return exit_code(status);
+    const auto end = start + std::chrono::duration_cast<Child::Clock::duration>(std::chrono::duration<double>(kill_after));
+    if (!child.watch(streams, -1, [end] { return end; })) child.kill(SIGKILL);
+    return shell_status(child.wait());
   }
-  char buf[65536];
-  auto next_check = std::chrono::steady_clock::now();
-  for (ssize_t n;;) {
-    if (options.stop_when) {  // asked on its own clock, so a program that prints without end is asked too
-      pollfd p{fds[0], POLLIN, 0};
-      const bool idle = ::poll(&p, 1, 250) == 0;
-      if (std::chrono::steady_clock::now() >= next_check) {
-        next_check = std::chrono::steady_clock::now() + std::chrono::milliseconds(250);
-        // SIGTERM, as when the grader dies: `timeout` (the leader of this
-        // group) passes it on, and ninja ends the commands it started in
-        // process groups of their own, which a SIGKILL here would miss.
-        if (options.stop_when()) ::kill(-pid, SIGTERM);
-      }
-      if (idle) continue;
-    }
-    if ((n = ::read(fds[0], buf, sizeof buf)) == 0) break;
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    if (output && output->size() < options.max_output)
-      output->append(buf, std::min(static_cast<size_t>(n), options.max_output - output->size()));
-  }
-  ::close(fds[0]);
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return exit_code(status);
+  // SIGTERM, as when the grader dies: `timeout` (the leader of this group)
+  // passes it on, and ninja ends the commands it started in process groups
+  // of their own, which a SIGKILL here would miss. Asked on its own clock, so
+  // that a program that prints without end is asked too.
+  std::function<void()> tick;
+  if (options.stop_when)
+    tick = [&] {
+      if (options.stop_when()) child.kill_group(SIGTERM);
+    };
+  child.watch(streams, 0, {}, tick);
+  return shell_status(child.wait());
 }
 
 }  // namespace

@@ -1,12 +1,8 @@
 #include "run/grade_part.h"
 
-#include <fcntl.h>
 #include <poll.h>
 #include <sched.h>
 #include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -22,6 +18,7 @@
 
 #include "boundary/one_cpu.h"
 #include "boundary/verifier_exit_codes.h"
+#include "process/launcher.h"
 #include "report/report_text.h"
 #include "run/run_outcome.h"
 #include "run/verdicts.h"
@@ -158,49 +155,38 @@ class WorkerWatch : public RunObserver {
 // thread could copy a lock that thread holds (malloc's) and hang the copy.
 RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& watch, const std::string& worker,
                            RunOutcome& worker_run) {
-  int to_worker[2], from_worker[2], done[2], outcome[2];
-  int* pipes[] = {to_worker, from_worker, done, outcome};
-  for (int i = 0; i < 4; ++i)
-    if (::pipe2(pipes[i], O_CLOEXEC) != 0) {
-      const std::string why = std::string("pipe: ") + std::strerror(errno);
-      for (int j = 0; j < i; ++j) ::close(pipes[j][0]), ::close(pipes[j][1]);
-      return not_run(why);
-    }
+  Pipe to_worker, from_worker, done, outcome;
+  for (Pipe* p : {&to_worker, &from_worker, &done, &outcome})
+    if (!p->open()) return not_run(std::string("pipe: ") + std::strerror(errno));
   // Both runs inherit the CPU at their clone: the helper's for the worker,
   // this thread's (restored after the run) for the verifier.
   cpu_set_t before;
   const bool restore = ::sched_getaffinity(0, sizeof before, &before) == 0;
   const std::optional<cpu_set_t> cpu = boundary::one_cpu();
-  std::fflush(nullptr);
-  const pid_t helper = ::fork();
-  if (helper == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  LaunchOptions launch;
+  launch.parent_death_signal = SIGKILL;
+  launch.child_ends = {to_worker.read.get(), from_worker.write.get(), done.read.get(), outcome.write.get()};
+  Child helper(launch, [&] {
     if (cpu) ::sched_setaffinity(0, sizeof *cpu, &*cpu);
-    for (int fd : {to_worker[1], from_worker[0], done[1], outcome[0]}) ::close(fd);
+    for (Fd* fd : {&to_worker.write, &from_worker.read, &done.write, &outcome.read}) fd->reset();
     RunRequest w{worker, {}, "", ""};
-    w.link_read = to_worker[0];
-    w.link_write = from_worker[1];
-    WorkerWatch worker_watch(done[0]);
-    write_outcome(outcome[1], sandbox.run(w, worker_watch));
+    w.link_read = to_worker.read.release();
+    w.link_write = from_worker.write.release();
+    WorkerWatch worker_watch(done.read.get());
+    write_outcome(outcome.write.get(), sandbox.run(w, worker_watch));
     ::_exit(0);
-  }
-  for (int fd : {to_worker[0], from_worker[1], done[0], outcome[1]}) ::close(fd);
-  if (helper < 0) {
-    const std::string why = std::string("fork: ") + std::strerror(errno);
-    for (int fd : {to_worker[1], from_worker[0], done[1], outcome[0]}) ::close(fd);
-    return not_run(why);
-  }
+  });
+  for (Fd* fd : {&to_worker.read, &from_worker.write, &done.read, &outcome.write}) fd->release();  // closed by the launch
+  if (!helper.started()) return not_run(std::string("fork: ") + std::strerror(helper.start_error()));
   request.args.push_back("--pt_worker_fds=5,6");
-  request.link_read = from_worker[0];
-  request.link_write = to_worker[1];
+  request.link_read = from_worker.read.release();
+  request.link_write = to_worker.write.release();
   if (cpu) ::sched_setaffinity(0, sizeof *cpu, &*cpu);
   RunOutcome run = sandbox.run(request, watch);
   if (cpu && restore) ::sched_setaffinity(0, sizeof before, &before);
-  ::close(done[1]);
-  worker_run = read_outcome(outcome[0]);
-  ::close(outcome[0]);
-  while (::waitpid(helper, nullptr, 0) < 0 && errno == EINTR) {
-  }
+  done.write.reset();
+  worker_run = read_outcome(outcome.read.get());
+  helper.wait();
   return run;
 }
 

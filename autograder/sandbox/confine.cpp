@@ -11,14 +11,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
-#include <thread>
 
+#include "process/launcher.h"
 #include "sandbox/landlock.h"
 #include "sandbox/seccomp_filter.h"
 
@@ -137,65 +134,6 @@ bool place_descriptors(const ChildArgs& a) {
 
 }  // namespace
 
-std::set<pid_t> children_of(pid_t pid) {
-  std::set<pid_t> found;
-  std::error_code ec;
-  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", ec)) {
-    std::ifstream in(task.path() / "children");
-    for (pid_t child; in >> child;) found.insert(child);
-  }
-  return found;
-}
-
-void kill_descendants(const std::set<pid_t>& spare) {
-  auto tree = [&] {
-    std::set<pid_t> found;
-    std::vector<pid_t> todo;
-    for (pid_t child : children_of(::getpid()))
-      if (!spare.count(child)) todo.push_back(child);
-    while (!todo.empty()) {
-      const pid_t pid = todo.back();
-      todo.pop_back();
-      if (!found.insert(pid).second) continue;
-      for (pid_t child : children_of(pid)) todo.push_back(child);
-    }
-    return found;
-  };
-  // Stop the whole tree first: a stopped process cannot fork, so a fork bomb
-  // cannot refill what is killed. Walk again until no new process shows up.
-  auto stop_and_kill = [&] {
-    std::set<pid_t> stopped;
-    for (int round = 0; round < 1000; ++round) {
-      bool grew = false;
-      for (pid_t pid : tree())
-        if (stopped.insert(pid).second) {
-          ::kill(pid, SIGSTOP);
-          grew = true;
-        }
-      if (!grew) break;
-    }
-    for (pid_t pid : stopped) ::kill(pid, SIGKILL);
-  };
-  stop_and_kill();
-  // They die; the orphans among them are handed to this subreaper to reap.
-  // The kernel's lists of children may miss a process while others fork and
-  // exit around it (proc(5): "children" is not reliable then), so a walk can
-  // miss one: a child still alive when nothing is left to reap is killed
-  // again, never waited for while it runs (hostile-fallback:fork_bomb once
-  // held the grader in waitpid on a missed process until ctest's limit).
-  for (int round = 0; round < 100000; ++round) {
-    std::set<pid_t> left = children_of(::getpid());
-    for (pid_t pid : spare) left.erase(pid);
-    if (left.empty()) break;
-    bool reaped = false;
-    for (pid_t pid : left) reaped = ::waitpid(pid, nullptr, WNOHANG) > 0 || reaped;
-    if (!reaped) {
-      stop_and_kill();
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-  }
-}
-
 void warden_main(const ChildArgs& a) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // the grader gone: the whole run goes (all of it, as PID 1)
   const Plan& p = *a.plan;
@@ -212,9 +150,9 @@ void warden_main(const ChildArgs& a) {
     if (p.proc) step(a, "proc", ::mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) == 0);
   }
   if (!p.pid_ns) ::prctl(PR_SET_CHILD_SUBREAPER, 1);
-  const pid_t test = ::fork();
-  if (test == 0) confine_and_exec(a);
-  if (test < 0) {
+  Child test({}, [&a] { confine_and_exec(a); });
+  if (!test.started()) {
+    errno = test.start_error();
     step(a, "fork", false);
     ::_exit(127);
   }
@@ -222,21 +160,13 @@ void warden_main(const ChildArgs& a) {
   // of a run beside it (a verifier's worker), must end when their writers do.
   if (a.status > 0) ::close_range(0, static_cast<unsigned>(a.status) - 1, 0);
   ::close_range(static_cast<unsigned>(a.status) + 1, ~0u, 0);
-  int status = 0;
-  for (;;) {
-    const pid_t pid = ::waitpid(-1, &status, 0);
-    if (pid == test || (pid < 0 && errno != EINTR)) break;
-  }
-  // What the run left behind. As PID 1 of its namespace, kill(-1) reaches
-  // every other process in it at once (and /proc may not show them by their
-  // pids here); as a subreaper, it has inherited every orphan.
-  if (p.pid_ns) {
-    ::kill(-1, SIGKILL);
-    while (::waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
-    }
-  } else {
+  const int status = test.wait_reaping_others();
+  // What the run left behind: as PID 1 of its namespace, every other process
+  // in it; as a subreaper, every orphan it has inherited.
+  if (p.pid_ns)
+    kill_namespace();
+  else
     kill_descendants({});
-  }
   say(a, "exit " + std::to_string(status));
   ::_exit(0);
 }

@@ -12,7 +12,6 @@
 // in a real run it ends the run before any code under test starts.
 #include <sys/types.h>
 
-#include <set>
 #include <string>
 #include <vector>
 
@@ -51,13 +50,5 @@ struct ChildArgs {
 };
 
 [[noreturn]] void warden_main(const ChildArgs& args);
-
-// The children of a process (all its threads'), from /proc.
-std::set<pid_t> children_of(pid_t pid);
-
-// For a child subreaper outside the run's PID namespace: stops every
-// descendant but the `spare` children and theirs, kills them all, and reaps
-// what is handed to it.
-void kill_descendants(const std::set<pid_t>& spare);
 
 }  // namespace pt::grade::confine

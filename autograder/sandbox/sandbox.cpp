@@ -2,8 +2,8 @@
 
 #include <fcntl.h>
 #include <linux/openat2.h>
-#include <poll.h>
 #include <pwd.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
@@ -17,10 +17,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <sstream>
 #include <stdexcept>
 
+#include "process/launcher.h"
 #include "sandbox/confine.h"
 #include "sandbox/landlock.h"
 #include "sandbox/seccomp_filter.h"
@@ -32,33 +32,6 @@ struct Sandbox::Plan : confine::Plan {};
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Fd {
-  int fd = -1;
-  Fd() = default;
-  explicit Fd(int f) : fd(f) {}
-  Fd(Fd&& o) noexcept : fd(o.fd) { o.fd = -1; }
-  Fd& operator=(Fd&& o) noexcept {
-    std::swap(fd, o.fd);
-    return *this;
-  }
-  ~Fd() { reset(); }
-  void reset() {
-    if (fd >= 0) ::close(fd);
-    fd = -1;
-  }
-};
-
-struct Pipe {
-  Fd read, write;
-  bool open() {
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) return false;
-    read = Fd(fds[0]);
-    write = Fd(fds[1]);
-    return true;
-  }
-};
 
 // The head and the tail of whatever the run prints: a flood costs the grader
 // CPU time (bounded by the time limits), never disk or memory.
@@ -122,176 +95,179 @@ Exit not_started(std::string why) {
   return e;
 }
 
-void read_available(int fd, const std::function<void(const char*, size_t)>& sink, bool* eof) {
-  char buf[65536];
-  const ssize_t n = ::read(fd, buf, sizeof buf);
-  if (n > 0)
-    sink(buf, static_cast<size_t>(n));
-  else if (n == 0 || (errno != EINTR && errno != EAGAIN))
-    *eof = true;
-}
-
-void drain(int fd, const std::function<void(const char*, size_t)>& sink) {
-  if (fd < 0) return;
-  ::fcntl(fd, F_SETFL, O_NONBLOCK);
-  for (bool eof = false; !eof;) {
-    char buf[65536];
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n > 0)
-      sink(buf, static_cast<size_t>(n));
-    else if (n == 0 || errno != EINTR)
-      eof = true;
-  }
-}
-
-SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
-                  bool probe, Fd& link_read, Fd& link_write) {
-  SpawnResult r;
+// The pipes of one run: the warden's status lines, the run's output and,
+// with a key, its verdict channel and the key it reads.
+struct RunPipes {
   Pipe status, output, verdicts, key;
-  if (!status.open() || !output.open() || (!req.key.empty() && (!verdicts.open() || !key.open()))) {
-    r.outcome.exit = not_started(std::string("pipe: ") + std::strerror(errno));
-    return r;
-  }
-  if (!req.key.empty()) {
-    [[maybe_unused]] auto n = ::write(key.write.fd, req.key.data(), req.key.size());
-    key.write.reset();  // the test main reads the key, then end of file
-  }
-  Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
-  if (binary.fd < 0) {
-    r.outcome.exit = not_started(req.binary + ": " + std::strerror(errno));
-    return r;
-  }
 
-  std::vector<std::string> args{req.binary};
-  args.insert(args.end(), req.args.begin(), req.args.end());
-  std::vector<std::string> env{"PATH=/usr/bin:/bin", "HOME=" + workdir, "TMPDIR=" + workdir, "LANG=C.UTF-8"};
-  confine::ChildArgs a;
-  a.plan = &plan;
-  a.probe = probe;
-  a.status = status.write.fd;
-  a.output = output.write.fd;
-  a.verdicts = verdicts.write.fd;
-  a.key = key.read.fd;
-  if (req.key.empty()) {  // a worker: its link where a verdict channel would be
-    a.verdicts = req.link_write;
-    a.key = req.link_read;
-  } else {
-    a.link_read = req.link_read;
-    a.link_write = req.link_write;
+  // "" or what failed.
+  std::string open(const std::string& key_text) {
+    if (!status.open() || !output.open() || (!key_text.empty() && (!verdicts.open() || !key.open())))
+      return std::string("pipe: ") + std::strerror(errno);
+    if (!key_text.empty()) {
+      [[maybe_unused]] auto n = ::write(key.write.get(), key_text.data(), key_text.size());
+      key.write.reset();  // the test main reads the key, then end of file
+    }
+    return "";
   }
-  a.binary = binary.fd;
-  a.binary_path = req.binary;
-  a.workdir = workdir;
-  a.output_dir = req.output_dir;
-  for (auto& s : args) a.argv.push_back(s.data());
-  a.argv.push_back(nullptr);
-  for (auto& s : env) a.envp.push_back(s.data());
-  a.envp.push_back(nullptr);
-  a.outer_uid = ::geteuid();
-  a.outer_gid = ::getegid();
+};
 
-  long flags = SIGCHLD;
+// What the warden is given (confine.h), with the strings it points into.
+struct WardenArgs {
+  std::vector<std::string> argv, env;
+  confine::ChildArgs child;
+
+  WardenArgs(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, const RunPipes& pipes,
+             int binary, bool probe)
+      : env{"PATH=/usr/bin:/bin", "HOME=" + workdir, "TMPDIR=" + workdir, "LANG=C.UTF-8"} {
+    argv.push_back(req.binary);
+    argv.insert(argv.end(), req.args.begin(), req.args.end());
+    confine::ChildArgs& a = child;
+    a.plan = &plan;
+    a.probe = probe;
+    a.status = pipes.status.write.get();
+    a.output = pipes.output.write.get();
+    a.verdicts = pipes.verdicts.write.get();
+    a.key = pipes.key.read.get();
+    if (req.key.empty()) {  // a worker: its link where a verdict channel would be
+      a.verdicts = req.link_write;
+      a.key = req.link_read;
+    } else {
+      a.link_read = req.link_read;
+      a.link_write = req.link_write;
+    }
+    a.binary = binary;
+    a.binary_path = req.binary;
+    a.workdir = workdir;
+    a.output_dir = req.output_dir;
+    for (auto& s : argv) a.argv.push_back(s.data());
+    a.argv.push_back(nullptr);
+    for (auto& s : env) a.envp.push_back(s.data());
+    a.envp.push_back(nullptr);
+    a.outer_uid = ::geteuid();
+    a.outer_gid = ::getegid();
+  }
+};
+
+unsigned long namespace_flags(const confine::Plan& plan) {
+  unsigned long flags = 0;
   if (plan.user_ns) flags |= CLONE_NEWUSER;
   if (plan.pid_ns) flags |= CLONE_NEWPID;
   if (plan.mount_ns) flags |= CLONE_NEWNS;
   if (plan.ipc_ns) flags |= CLONE_NEWIPC;
-  // Children the caller already had are not the run's: never killed.
-  const std::set<pid_t> before = confine::children_of(::getpid());
-  const auto start = Clock::now();
-  // fork() with namespaces: the child is PID 1 of the new PID namespace.
-  const pid_t warden = static_cast<pid_t>(::syscall(SYS_clone, flags, nullptr, nullptr, nullptr, 0));
-  if (warden < 0) {
-    r.clone_errno = errno;
-    r.outcome.exit = not_started(std::string("clone: ") + std::strerror(errno));
-    return r;
-  }
-  if (warden == 0) confine::warden_main(a);
-  g_warden = warden;
-  status.write.reset();
-  output.write.reset();
-  verdicts.write.reset();
-  key.read.reset();
-  binary.reset();
-  link_read.reset();  // the child has its own: the peer sees the end of the link when this run ends
-  link_write.reset();
+  return flags;
+}
 
-  const SandboxLimits& limits = plan.limits;
-  OutputKeeper kept(limits.output_head, limits.output_tail);
-  std::string status_text;
-  auto keep_output = [&](const char* d, size_t n) { kept.add(d, n); };
-  auto to_observer = [&](const char* d, size_t n) { observer.on_channel(std::string_view(d, n)); };
-  auto to_status = [&](const char* d, size_t n) {
-    if (status_text.size() < 65536) status_text.append(d, n);
-  };
-  bool status_eof = false, output_eof = false, verdicts_eof = verdicts.read.fd < 0;
-  bool timed_out = false;
-  double limit = 0;
-  while (!status_eof) {
-    const Deadline d = observer.deadline();
-    const auto now = Clock::now();
-    if (now >= d.when) {
-      timed_out = true;
-      limit = d.limit_seconds;
-      break;
-    }
-    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(d.when - now).count() + 1;
-    pollfd fds[3] = {{status.read.fd, POLLIN, 0},
-                     {output_eof ? -1 : output.read.fd, POLLIN, 0},
-                     {verdicts_eof ? -1 : verdicts.read.fd, POLLIN, 0}};
-    if (::poll(fds, 3, static_cast<int>(std::min<long long>(wait, 200))) < 0 && errno != EINTR) break;
-    if (fds[1].revents) read_available(output.read.fd, keep_output, &output_eof);
-    if (fds[2].revents) read_available(verdicts.read.fd, to_observer, &verdicts_eof);
-    if (fds[0].revents) read_available(status.read.fd, to_status, &status_eof);
-  }
-  ::kill(warden, SIGKILL);  // a timeout; otherwise it has already gone
-  int warden_status = 0;
-  while (::waitpid(warden, &warden_status, 0) < 0 && errno == EINTR) {
-  }
-  g_warden = 0;
-  // Without a PID namespace, whatever the killed warden left is handed here.
-  if (!plan.pid_ns) confine::kill_descendants(before);
-  drain(output.read.fd, keep_output);
-  if (!verdicts_eof) drain(verdicts.read.fd, to_observer);
-  drain(status.read.fd, to_status);
-
-  RunOutcome& out = r.outcome;
-  out.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  out.output = kept.text();
-  out.output_bytes = kept.total();
+// The warden's status lines (confine.h): the steps that failed, and the
+// run's wait status when it said one.
+struct WardenReport {
+  std::vector<Failure> failures;
   bool reported = false;
   int wait_status = 0;
-  std::istringstream lines(status_text);
+};
+
+WardenReport read_status(const std::string& text) {
+  WardenReport w;
+  std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
     std::istringstream words(line);
-    std::string kind, step;
+    std::string kind;
     words >> kind;
     if (kind == "exit") {
-      reported = static_cast<bool>(words >> wait_status);
+      w.reported = static_cast<bool>(words >> w.wait_status);
     } else if (kind == "fail") {
       Failure f;
       words >> f.step >> f.err;
       std::getline(words >> std::ws, f.what);
-      r.failures.push_back(f);
+      w.failures.push_back(f);
     }
   }
+  return w;
+}
+
+// How the run ended: its deadline, a step of the sandbox that failed, a
+// warden killed before it could say, or the exit status it said.
+Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int warden_status) {
+  Exit e;
   if (timed_out) {
-    out.exit.how = Exit::How::TimedOut;
-    out.exit.limit = limit;
-  } else if (!probe && !r.failures.empty()) {
-    const Failure& f = r.failures.front();
-    out.exit = not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
-  } else if (!reported) {
-    out.exit.how = Exit::How::Lost;
-    out.exit.error = "the sandbox's warden was killed" +
-                     (WIFSIGNALED(warden_status) ? " by signal " + std::to_string(WTERMSIG(warden_status)) : "") +
-                     " before it could say how the run ended";
-  } else if (WIFSIGNALED(wait_status)) {
-    out.exit.how = Exit::How::Signaled;
-    out.exit.code = WTERMSIG(wait_status);
+    e.how = Exit::How::TimedOut;
+    e.limit = timed_out->limit_seconds;
+  } else if (!probe && !w.failures.empty()) {
+    const Failure& f = w.failures.front();
+    e = not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
+  } else if (!w.reported) {
+    e.how = Exit::How::Lost;
+    e.error = "the sandbox's warden was killed" +
+              (WIFSIGNALED(warden_status) ? " by signal " + std::to_string(WTERMSIG(warden_status)) : "") +
+              " before it could say how the run ended";
+  } else if (WIFSIGNALED(w.wait_status)) {
+    e.how = Exit::How::Signaled;
+    e.code = WTERMSIG(w.wait_status);
   } else {
-    out.exit.how = Exit::How::Exited;
-    out.exit.code = WEXITSTATUS(wait_status);
+    e.how = Exit::How::Exited;
+    e.code = WEXITSTATUS(w.wait_status);
   }
+  return e;
+}
+
+// One run: the warden started in the run's namespaces (confine.h), its
+// output and verdicts read until it reports or the observer's deadline
+// passes, then every process of the run dead before this returns.
+SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
+                  bool probe, Fd& link_read, Fd& link_write) {
+  SpawnResult r;
+  RunPipes pipes;
+  if (const std::string error = pipes.open(req.key); !error.empty()) {
+    r.outcome.exit = not_started(error);
+    return r;
+  }
+  Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
+  if (binary.get() < 0) {
+    r.outcome.exit = not_started(req.binary + ": " + std::strerror(errno));
+    return r;
+  }
+  const WardenArgs args(plan, workdir, req, pipes, binary.get(), probe);
+  // Children the caller already had are not the run's: never killed.
+  const std::set<pid_t> before = children_of(::getpid());
+  const auto start = Clock::now();
+  LaunchOptions launch;
+  launch.namespaces = namespace_flags(plan);
+  // The child has its own: the peer sees the end of the link when this run ends.
+  launch.child_ends = {pipes.status.write.release(), pipes.output.write.release(), pipes.verdicts.write.release(),
+                       pipes.key.read.release(),     binary.release(),             link_read.release(),
+                       link_write.release()};
+  Child warden(launch, [&args] { confine::warden_main(args.child); });
+  if (!warden.started()) {
+    r.clone_errno = warden.start_error();
+    r.outcome.exit = not_started(std::string("clone: ") + std::strerror(warden.start_error()));
+    return r;
+  }
+  g_warden = warden.pid();
+
+  const SandboxLimits& limits = plan.limits;
+  OutputKeeper kept(limits.output_head, limits.output_tail);
+  std::string status_text;
+  std::vector<Stream> streams{
+      {pipes.output.read.get(), [&](const char* d, size_t n) { kept.add(d, n); }},
+      {pipes.verdicts.read.get(), [&](const char* d, size_t n) { observer.on_channel(std::string_view(d, n)); }},
+      {pipes.status.read.get(), [&](const char* d, size_t n) {
+         if (status_text.size() < 65536) status_text.append(d, n);
+       }}};
+  Deadline deadline{};
+  const bool ended = warden.watch(streams, 2, [&] { return (deadline = observer.deadline()).when; });
+  warden.kill(SIGKILL);  // a timeout; otherwise it has already gone
+  const int warden_status = warden.wait();
+  g_warden = 0;
+  // Without a PID namespace, whatever the killed warden left is handed here.
+  if (!plan.pid_ns) kill_descendants(before);
+  for (const Stream& s : streams) drain(s);
+
+  const WardenReport report = read_status(status_text);
+  r.failures = report.failures;
+  r.outcome.exit = exit_of(report, ended ? nullptr : &deadline, probe, warden_status);
+  r.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.outcome.output = kept.text();
+  r.outcome.output_bytes = kept.total();
   return r;
 }
 
@@ -355,133 +331,173 @@ Sandbox::~Sandbox() {
   delete plan_;
 }
 
-void Sandbox::probe() {
-  active_.clear();
-  missing_.clear();
-  Plan& p = *plan_;
-  if (!options_.confine) {
-    active_.push_back("none but limits, its own session and a child subreaper (--no-sandbox)");
-    return;
-  }
+namespace {
+
+// Why each layer the sandbox could have is missing ("" where it holds).
+struct LayerNotes {
+  std::string namespaces, tmpfs, proc, user, landlock, seccomp;
+};
+
+const std::string kTurnedOff = ": left out (--sandbox-without)";
+
+bool wanted(const SandboxOptions& options, const char* layer) {
+  return std::find(options.without.begin(), options.without.end(), layer) == options.without.end();
+}
+
+// Who runs the code under test: the unprivileged account when the grader is
+// root, else the grader's own user.
+void choose_user(confine::Plan& p, const SandboxOptions& options, LayerNotes& notes) {
   const bool root = ::geteuid() == 0;
-  auto wanted = [&](const char* layer) {
-    return std::find(options_.without.begin(), options_.without.end(), layer) == options_.without.end();
-  };
-  const std::string turned_off = ": left out (--sandbox-without)";
-  std::string user_note;
-  if (root && !wanted("user")) {
-    user_note = "unprivileged user" + turned_off + " (the code under test runs as root)";
+  if (root && !wanted(options, "user")) {
+    notes.user = "unprivileged user" + kTurnedOff + " (the code under test runs as root)";
   } else if (root) {
-    if (const passwd* pw = ::getpwnam(options_.user.c_str())) {
+    if (const passwd* pw = ::getpwnam(options.user.c_str())) {
       p.switch_user = true;
       p.uid = pw->pw_uid;
       p.gid = pw->pw_gid;
     } else {
-      user_note = "unprivileged user: there is no account \"" + options_.user + "\" (the code under test runs as root)";
+      notes.user = "unprivileged user: there is no account \"" + options.user + "\" (the code under test runs as root)";
     }
   } else {
-    user_note = "unprivileged user: the grader is not root, so the code under test runs as the grader's own user";
+    notes.user = "unprivileged user: the grader is not root, so the code under test runs as the grader's own user";
   }
-  p.user_ns = !root;
+}
+
+void drop_namespaces(confine::Plan& p) { p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false; }
+
+// Every layer this build and kernel could offer, less those left out.
+void offered_layers(confine::Plan& p, const SandboxOptions& options, LayerNotes& notes) {
+  p.user_ns = ::geteuid() != 0;
   p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = true;
   p.landlock_abi = landlock_abi();
   p.seccomp = seccomp_available();
-  std::string ns_note, tmpfs_note, proc_note, landlock_note, seccomp_note;
-  if (p.landlock_abi == 0) landlock_note = "Landlock: this kernel does not offer it";
-  if (!p.seccomp) seccomp_note = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
-  if (!wanted("namespaces")) {
-    p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false;
-    ns_note = "namespaces" + turned_off;
+  if (p.landlock_abi == 0) notes.landlock = "Landlock: this kernel does not offer it";
+  if (!p.seccomp) notes.seccomp = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
+  if (!wanted(options, "namespaces")) {
+    drop_namespaces(p);
+    notes.namespaces = "namespaces" + kTurnedOff;
   }
-  if (!wanted("landlock")) {
+  if (!wanted(options, "landlock")) {
     p.landlock_abi = 0;
-    landlock_note = "Landlock" + turned_off;
+    notes.landlock = "Landlock" + kTurnedOff;
   }
-  if (!wanted("seccomp")) {
+  if (!wanted(options, "seccomp")) {
     p.seccomp = false;
-    seccomp_note = "seccomp" + turned_off;
+    notes.seccomp = "seccomp" + kTurnedOff;
   }
+}
 
+// A probe run's failed step: the layer it drops, and why. False for a step
+// no run can do without.
+bool drop_failed_layer(confine::Plan& p, const Failure& f, const std::string& user, LayerNotes& notes,
+                       bool& namespaces_dropped) {
+  if (f.step == "uid-map" || f.step == "mount-private") {
+    if (!namespaces_dropped) {
+      notes.namespaces = "namespaces: " + f.step + ": " + f.what;
+      drop_namespaces(p);
+      namespaces_dropped = true;
+    }
+  } else if (f.step == "tmpfs") {
+    p.tmpfs = false;
+    notes.tmpfs = "private tmpfs working directory: " + f.what + " (a folder on disk instead)";
+  } else if (f.step == "proc") {
+    p.proc = false;
+    notes.proc = "private /proc: " + f.what;
+  } else if (f.step == "landlock") {
+    p.landlock_abi = 0;
+    notes.landlock = "Landlock: " + f.what;
+  } else if (f.step == "seccomp") {
+    p.seccomp = false;
+    notes.seccomp = "seccomp: " + f.what;
+  } else if (f.step == "user") {
+    p.switch_user = false;
+    notes.user = "unprivileged user: cannot become " + user + ": " + f.what;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Runs this program through every layer planned, up to exec, and drops what
+// fails, until a probe run passes them all.
+void keep_layers_that_work(confine::Plan& p, const std::string& scratch, const std::string& user, LayerNotes& notes) {
   char self[4096];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
   RunRequest request;
   request.binary = n > 0 ? std::string(self, static_cast<size_t>(n)) : "/proc/self/exe";
   for (int attempt = 0; attempt < 4; ++attempt) {
     p.nproc = p.switch_user || p.user_ns;
-    const std::string workdir = scratch_ + "/probe-" + std::to_string(attempt);
+    const std::string workdir = scratch + "/probe-" + std::to_string(attempt);
     ::mkdir(workdir.c_str(), 0700);
     FixedDeadline observer(10);
     Fd no_link_read, no_link_write;
     const SpawnResult r = spawn(p, workdir, request, observer, /*probe=*/true, no_link_read, no_link_write);
     std::error_code ec;
     fs::remove_all(workdir, ec);
-    bool retry = false;
-    auto drop_namespaces = [&](const std::string& why) {
-      ns_note = "namespaces: " + why;
-      p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false;
-      retry = true;
-    };
     if (r.clone_errno != 0) {
-      drop_namespaces(std::string("clone() refused them: ") + std::strerror(r.clone_errno));
+      notes.namespaces = std::string("namespaces: clone() refused them: ") + std::strerror(r.clone_errno);
+      drop_namespaces(p);
       continue;
     }
-    for (const Failure& f : r.failures) {
-      const std::string why = f.step + ": " + f.what;
-      if (f.step == "uid-map" || f.step == "mount-private") {
-        if (!retry) drop_namespaces(why);
-      } else if (f.step == "tmpfs") {
-        p.tmpfs = false;
-        tmpfs_note = "private tmpfs working directory: " + f.what + " (a folder on disk instead)";
-      } else if (f.step == "proc") {
-        p.proc = false;
-        proc_note = "private /proc: " + f.what;
-      } else if (f.step == "landlock") {
-        p.landlock_abi = 0;
-        landlock_note = "Landlock: " + f.what;
-      } else if (f.step == "seccomp") {
-        p.seccomp = false;
-        seccomp_note = "seccomp: " + f.what;
-      } else if (f.step == "user") {
-        p.switch_user = false;
-        user_note = "unprivileged user: cannot become " + options_.user + ": " + f.what;
-      } else {
-        throw std::runtime_error("the sandbox cannot start here: " + why);
-      }
-      retry = true;
-    }
-    if (!retry) break;
+    bool namespaces_dropped = false;
+    for (const Failure& f : r.failures)
+      if (!drop_failed_layer(p, f, user, notes, namespaces_dropped))
+        throw std::runtime_error("the sandbox cannot start here: " + f.step + ": " + f.what);
+    if (r.failures.empty()) return;
     if (attempt == 3) throw std::runtime_error("the sandbox's probe does not settle");
   }
+}
 
+// The layers in force, in words for the report.
+std::vector<std::string> describe_layers(const confine::Plan& p, const std::string& user) {
+  std::vector<std::string> active;
   const SandboxLimits& l = p.limits;
   if (p.pid_ns)
-    active_.push_back("PID namespace: every process of a run dies with it");
+    active.push_back("PID namespace: every process of a run dies with it");
   else
-    active_.push_back("child subreaper: whatever a run leaves behind is killed at its end");
-  if (p.user_ns) active_.push_back("user namespace: no capability inside or out");
-  if (p.ipc_ns)
-    active_.push_back("IPC namespace: System V objects and POSIX message queues die with the run");
-  if (p.tmpfs) active_.push_back("private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
-  if (!p.tmpfs) active_.push_back("private working directory");
-  if (p.proc) active_.push_back("private /proc: other processes are invisible");
-  if (p.switch_user) active_.push_back("runs as " + options_.user);
-  active_.push_back("own session, no terminal");
+    active.push_back("child subreaper: whatever a run leaves behind is killed at its end");
+  if (p.user_ns) active.push_back("user namespace: no capability inside or out");
+  if (p.ipc_ns) active.push_back("IPC namespace: System V objects and POSIX message queues die with the run");
+  if (p.tmpfs) active.push_back("private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
+  if (!p.tmpfs) active.push_back("private working directory");
+  if (p.proc) active.push_back("private /proc: other processes are invisible");
+  if (p.switch_user) active.push_back("runs as " + user);
+  active.push_back("own session, no terminal");
   std::ostringstream limits;
   limits << "limits: address space " << mebibytes(l.address_space) << ", CPU " << l.cpu_seconds << " s, files "
          << mebibytes(l.file_size) << ", " << l.open_files << " open files";
   if (p.nproc) limits << ", " << l.processes << " processes and threads";
-  active_.push_back(limits.str());
+  active.push_back(limits.str());
   if (p.landlock_abi > 0)
-    active_.push_back("Landlock ABI " + std::to_string(p.landlock_abi) +
-                      ": reads only the system and the given paths, writes only its working directory, executes only "
-                      "itself" +
-                      (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
+    active.push_back("Landlock ABI " + std::to_string(p.landlock_abi) +
+                     ": reads only the system and the given paths, writes only its working directory, executes only "
+                     "itself" +
+                     (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
   if (p.seccomp)
-    active_.push_back("seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; "
-                      "signals only to itself");
-  active_.push_back("output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
-                    std::to_string(l.output_tail >> 10) + " KiB kept");
-  for (const std::string* note : {&ns_note, &tmpfs_note, &proc_note, &user_note, &landlock_note, &seccomp_note})
+    active.push_back("seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; "
+                     "signals only to itself");
+  active.push_back("output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
+                   std::to_string(l.output_tail >> 10) + " KiB kept");
+  return active;
+}
+
+}  // namespace
+
+void Sandbox::probe() {
+  active_.clear();
+  missing_.clear();
+  if (!options_.confine) {
+    active_.push_back("none but limits, its own session and a child subreaper (--no-sandbox)");
+    return;
+  }
+  Plan& p = *plan_;
+  LayerNotes notes;
+  choose_user(p, options_, notes);
+  offered_layers(p, options_, notes);
+  keep_layers_that_work(p, scratch_, options_.user, notes);
+  active_ = describe_layers(p, options_.user);
+  for (const std::string* note : {&notes.namespaces, &notes.tmpfs, &notes.proc, &notes.user, &notes.landlock,
+                                  &notes.seccomp})
     if (!note->empty()) missing_.push_back(*note);
   if (!p.nproc && !p.seccomp) missing_.push_back("process limit: nothing stops a fork bomb but the time limits");
 }
