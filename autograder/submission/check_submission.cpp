@@ -1,7 +1,7 @@
 #include "submission/check_submission.h"
 
-#include <chrono>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,13 +12,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compile/dependency_check.h"
 #include "intake/ignore_rules.h"
 #include "intake/submission_files.h"
 #include "process/command.h"
 #include "report/check_answer.h"
 #include "report/classroom_result.h"
 #include "run/manifest.h"
-#include "submission/submission.h"
+#include "submission/pipeline.h"
 
 namespace pt::grade {
 namespace {
@@ -153,152 +154,112 @@ std::map<int, HiddenNotRun> hidden_not_run_in(const std::string& source_dir) {
   return hidden;
 }
 
-int check_submission(const CheckOptions& opt) {
-  const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
-  ResultChannel result(opt.format == "github-classroom");
-  const json facts = read_facts(source);
-  if (!fs::is_regular_file(build / "CMakeCache.txt")) {
-    std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
-                 build.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     build.string() + " is not a configured build", 0));
-    return 2;
-  }
-  std::map<int, std::string> expected;
-  for (const auto& [part, name] : facts.at("task_files").items()) expected[std::stoi(part)] = name.get<std::string>();
-  std::set<std::string> headers;
-  for (const auto& [name, hash] : facts.at("files").items())
-    if (name.rfind("skeleton/", 0) == 0 && fs::path(name).extension() == ".h") headers.insert(name.substr(9));
-  std::vector<std::string> problems;  // each a way the grader's result will differ from this one
-  std::map<int, std::string> not_graded;  // part -> the grader's reason
+namespace {
 
-  // The answer comes first, the steps that found it after: they are
-  // gathered here while progress goes to stderr.
-  std::string details;
-  auto say = [&details](const char* format, auto... args) {
+// The student's ending: the steps' details gathered while progress goes to
+// stderr, each way the grader's result will differ from this one, and per
+// part the grader's reason when it will not grade it.
+class Answer : public Ending {
+ public:
+  void say(const char* format, ...) __attribute__((format(printf, 2, 3))) {
     char line[4096];
-    std::snprintf(line, sizeof line, format, args...);
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(line, sizeof line, format, args);
+    va_end(args);
     details += line;
-  };
-  auto heading = [&details](const char* text) { details += std::string("\n== ") + text + "\n"; };
-  std::printf("pt-grade check-submission %s: what the grader will do with these files.\n", opt.tasks.c_str());
-  heading("1. The files, taken as the grader takes them");
-  const Submission sub = read_submission(opt.tasks, expected);
-  for (const auto& n : sub.notes) details += indented(n);
-  if (!sub.problems.empty()) {
-    std::string why = "submission rejected before building:";
-    for (const auto& p : sub.problems) why += "\n  " + p;
-    std::fputs(indented(why).c_str(), stdout);
-    std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
-    if (result.active())
-      result.write(classroom_stopped("fail", "The files: the grader would reject every part", why,
-                                     visible_points(build)));
-    return 1;
   }
-  std::set<int> submitted;
+  void heading(const char* text) { details += std::string("\n== ") + text + "\n"; }
+
+  void refused(const TaskFile& file, Stage stage, const std::string& why) override {
+    details += indented(why);
+    not_graded[file.part] = why;
+    const char* what = stage == Stage::Includes ? ": rejected before building (step 2)"
+                       : stage == Stage::Build  ? ": does not build (step 4)"
+                       : stage == Stage::Reads  ? ": reads files the grader refuses (step 4)"
+                                                : ": not built (step 1)";
+    problems.push_back("part " + std::to_string(file.part) + what);
+  }
+  void accepted(const TaskFile& file) override { say("   %s: accepted\n", file.where.c_str()); }
+  void built(const TaskFile& file, double seconds) override {
+    say("   part %d: built in %.0f s\n", file.part, std::round(seconds));
+  }
+
+  std::string details;
+  std::vector<std::string> problems;      // each a way the grader's result will differ from this one
+  std::map<int, std::string> not_graded;  // part -> the grader's reason
+};
+
+// Stage 3 in the release's own build: each part as the grader builds it (a
+// worker of the task file and the tests' verifier beside it, here with the
+// visible tests only, for a part across the process boundary), then the
+// compiler's list of what it read, as the grader checks it.
+class ReleaseBuild : public PartBuilder {
+ public:
+  ReleaseBuild(const fs::path& source, const fs::path& build, const std::string& shown, Answer& answer)
+      : source_(source), build_(build), shown_(shown), answer_(answer) {}
+
+  std::string build(const TaskFile& f, BuiltPart* built) override {
+    const bool across = across_boundary(f.part);
+    const std::string part = "part" + std::to_string(f.part);
+    const std::string target = part + (across ? "_worker" : "_tests");
+    const std::string also = across ? " " + part + "_verify" : "";
+    answer_.say("   $ cmake --build %s --target %s%s\n", shown_.c_str(), target.c_str(), also.c_str());
+    std::fprintf(stderr, "building part %d ...\n", f.part);
+    std::vector<std::string> command{"cmake", "--build", build_.string(), "--target", target};
+    if (across) command.push_back(part + "_verify");
+    std::string out;
+    if (run_command(command, &out) != 0)
+      return f.where + " does not build: part " + std::to_string(f.part) + " scores 0.\n" +
+             compiler_errors(out, source_.string());
+    built->binary = (build_ / "tests" / (across ? part + "_verify" : target)).string();
+    if (across) built->worker = (build_ / "tests" / target).string();
+    return "";
+  }
+
+  // The task file, the framework's headers, the compiler's own, and what the
+  // header probe (built with partN_tests) read.
+  std::vector<std::string> unexpected_reads(const TaskFile& f) override {
+    return unexpected_dependencies(build_.string(), "pt_part" + std::to_string(f.part) + "_student.dir/",
+                                   {(source_ / "tasks").string() + "/", (source_ / "skeleton").string() + "/",
+                                    "/usr/lib/gcc/"},
+                                   "pt_header_probe.dir/");
+  }
+
+ private:
+  const fs::path source_, build_;
+  const std::string shown_;  // the build folder as the student named it
+  Answer& answer_;
+};
+
+// Step 1's own check: steps 4 and 5 build and test the release's tasks/, so
+// a submission elsewhere must be that.
+void compare_with_tasks(const fs::path& source, const Submission& sub, Answer& answer) {
   for (const auto& f : sub.files) {
-    say("   %s: part %d\n", f.where.c_str(), f.part);
-    submitted.insert(f.part);
-    // Step 4 builds the release's tasks/: a submission elsewhere must be that.
+    answer.say("   %s: part %d\n", f.where.c_str(), f.part);
     std::ifstream built(source / "tasks" / f.name, std::ios::binary);
     std::ostringstream text;
     text << built.rdbuf();
     if (!f.too_large && text.str() != f.text)
-      problems.push_back(f.where + " is not tasks/" + f.name + ", which is what steps 4 and 5 build and test");
+      answer.problems.push_back(f.where + " is not tasks/" + f.name + ", which is what steps 4 and 5 build and test");
   }
-  for (const auto& [part, name] : expected)
-    if (!submitted.count(part)) not_graded[part] = "not submitted: no " + name + " in the submission";
+}
 
-  heading("2. What each file includes (the grader's allowlist)");
-  std::vector<const TaskFile*> buildable;
-  for (const auto& f : sub.files) {
-    const std::string rejected = intake_rejection(f, headers, nullptr);
-    if (rejected.empty()) {
-      say("   %s: accepted\n", f.where.c_str());
-      buildable.push_back(&f);
-      continue;
-    }
-    details += indented(rejected);
-    not_graded[f.part] = rejected;
-    problems.push_back("part " + std::to_string(f.part) + ": rejected before building (step 2)");
-  }
-
-  heading("3. The files the grader has its own copy of");
+// Step 3: the files the grader has its own copy of.
+void check_shipped_files(const fs::path& source, const json& facts, Answer& answer) {
   const auto edits = edited_files(source, facts.at("files"));
-  if (edits.empty()) say("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
-  for (const auto& e : edits) say("   %s\n", e.c_str());
-  if (!edits.empty()) {
-    details += indented("The grader builds your task files with its own copy of these files, not yours: a task file "
-                        "that needs your change will not build there, or behave as it does here. Undo the change "
-                        "(e.g. from the release's tarball) and move what you need into your task file.");
-    problems.push_back(std::to_string(edits.size()) + " file(s) the grader has its own copy of differ (step 3)");
-  }
+  if (edits.empty()) answer.say("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
+  for (const auto& e : edits) answer.say("   %s\n", e.c_str());
+  if (edits.empty()) return;
+  answer.details += indented("The grader builds your task files with its own copy of these files, not yours: a task "
+                             "file that needs your change will not build there, or behave as it does here. Undo the "
+                             "change (e.g. from the release's tarball) and move what you need into your task file.");
+  answer.problems.push_back(std::to_string(edits.size()) + " file(s) the grader has its own copy of differ (step 3)");
+}
 
-  heading("4. Each part built on its own, as the grader builds it");
-  std::map<int, std::string> binaries, workers;
-  for (const TaskFile* f : buildable) {
-    // A part graded across the process boundary (boundary/README.md) is built
-    // as the grader builds it: a worker of the task file, and the tests'
-    // verifier beside it (here with the visible tests only).
-    const bool across = across_boundary(f->part);
-    const std::string part = "part" + std::to_string(f->part);
-    const std::string target = part + (across ? "_worker" : "_tests");
-    const std::string also = across ? " " + part + "_verify" : "";
-    say("   $ cmake --build %s --target %s%s\n", opt.build_dir.c_str(), target.c_str(), also.c_str());
-    std::fprintf(stderr, "building part %d ...\n", f->part);
-    std::string out;
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<std::string> command{"cmake", "--build", build.string(), "--target", target};
-    if (across) command.push_back(part + "_verify");
-    const int rc = run_command(command, &out);
-    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (rc != 0) {
-      const std::string why = f->where + " does not build: part " + std::to_string(f->part) + " scores 0.\n" +
-                              compiler_errors(out, source.string());
-      details += indented(why);
-      not_graded[f->part] = why;
-      problems.push_back("part " + std::to_string(f->part) + ": does not build (step 4)");
-      continue;
-    }
-    // As the grader checks it: the task file, the framework's headers, the
-    // compiler's own, and what the header probe (built with partN_tests) read.
-    const auto unexpected =
-        unexpected_dependencies(build.string(), "pt_part" + std::to_string(f->part) + "_student.dir/",
-                                {(source / "tasks").string() + "/", (source / "skeleton").string() + "/",
-                                 "/usr/lib/gcc/"},
-                                "pt_header_probe.dir/");
-    if (!unexpected.empty()) {
-      std::string why = "while compiling " + f->where + " the compiler read files outside the framework's headers and "
-                        "the standard library: rejected.\n";
-      for (const auto& u : unexpected) why += "  " + u + "\n";
-      details += indented(why);
-      not_graded[f->part] = why;
-      problems.push_back("part " + std::to_string(f->part) + ": reads files the grader refuses (step 4)");
-      continue;
-    }
-    say("   part %d: built in %.0f s\n", f->part, std::round(took));
-    if (across) {
-      binaries[f->part] = (build / "tests" / (part + "_verify")).string();
-      workers[f->part] = (build / "tests" / target).string();
-    } else {
-      binaries[f->part] = (build / "tests" / target).string();
-    }
-  }
-
-  heading("5. The visible tests");
-  const fs::path manifest_path = build / "tests" / "graded_manifest.json";
-  if (!fs::is_regular_file(manifest_path)) {
-    std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     manifest_path.string() + " not found: the release is not built", 0));
-    return 2;
-  }
-  // The student cannot know whether the instructor counts the extension
-  // tasks, so they are shown at 0 points, as the grader shows them by default.
-  Manifest manifest = read_manifest(manifest_path.string());
-  leave_extensions_uncounted(manifest);
+// Step 5: every part of the manifest, graded where it was built.
+Report grade_visible(const CheckOptions& opt, const Manifest& manifest, const fs::path& source, const fs::path& build,
+                     const Pipeline& pipeline, const Answer& answer) {
   Report report;
   report.hidden_not_run = hidden_not_run_in(source.string());
   Sandbox sandbox(opt.sandbox);
@@ -317,15 +278,23 @@ int check_submission(const CheckOptions& opt) {
   std::error_code gone;
   fs::remove_all(image_root, gone);  // only this check's images, none of an earlier one
   for (const auto& [part, tests] : manifest.parts) {
-    if (auto it = binaries.find(part); it != binaries.end())
-      report.parts.push_back(grade_binary(part, it->second, tests, opt.limits, sandbox, it->second + ".grade.log",
-                                          Redactor(), workers.count(part) ? workers.at(part) : "", &kept_images));
-    else
-      report.parts.push_back(pending_part(part, tests, not_graded.count(part) ? not_graded[part] : "not built"));
+    if (pipeline.built().count(part)) {
+      report.parts.push_back(pipeline.grade(part, tests, opt.limits, sandbox, Redactor(), &kept_images));
+      continue;
+    }
+    const auto reason = answer.not_graded.find(part);
+    const std::string not_sent = pipeline.not_submitted(part);
+    report.parts.push_back(pending_part(part, tests, reason != answer.not_graded.end() ? reason->second
+                                                     : !not_sent.empty()              ? not_sent
+                                                                                      : "not built"));
   }
   report.complete = true;
+  return report;
+}
 
-  // The answer: per part, whose the file is, its visible score, what differs.
+// The answer first: per part, whose the file is, its visible score, what
+// differs; then how the check found it; the parts not started folded.
+void print_check(const Report& report, const Pipeline& pipeline, const Answer& answer) {
   std::vector<PartAnswer> answers;
   Report started = report;  // the parts whose failures say something: all but the untouched
   started.parts.clear();
@@ -337,12 +306,12 @@ int check_submission(const CheckOptions& opt) {
     a.possible = part.possible();
     if (auto h = report.hidden_not_run.find(part.part); h != report.hidden_not_run.end()) a.hidden = h->second;
     const TaskFile* file = nullptr;
-    for (const auto& f : sub.files)
+    for (const auto& f : pipeline.submission().files)
       if (f.part == part.part) file = &f;
     if (!file) {
       a.state = "not submitted";
     } else if (!part.graded) {
-      a.state = "not graded: see step " + std::string(binaries.count(part.part) ? "5" : "2 or 4");
+      a.state = "not graded: see step " + std::string(pipeline.built().count(part.part) ? "5" : "2 or 4");
       a.differs = "scores 0";
     } else if (untouched(part)) {
       a.state = "not started";
@@ -360,18 +329,85 @@ int check_submission(const CheckOptions& opt) {
     }
     answers.push_back(a);
   }
-  print_answer(answers, problems);
+  print_answer(answers, answer.problems);
   std::printf("\nHow this check found it:\n");
-  std::fputs(details.c_str(), stdout);
+  std::fputs(answer.details.c_str(), stdout);
   if (!started.parts.empty()) print_report(started, false);
   if (!folded_parts.empty()) std::printf("\nParts not started (folded):\n%s", folded_parts.c_str());
   std::fflush(stdout);
+}
+
+}  // namespace
+
+int check_submission(const CheckOptions& opt) {
+  const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
+  ResultChannel result(opt.format == "github-classroom");
+  const json facts = read_facts(source);
+  if (!fs::is_regular_file(build / "CMakeCache.txt")) {
+    std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
+                 build.c_str());
+    if (result.active())
+      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
+                                     build.string() + " is not a configured build", 0));
+    return 2;
+  }
+  std::map<int, std::string> expected;
+  std::set<int> parts;
+  for (const auto& [part, name] : facts.at("task_files").items()) {
+    expected[std::stoi(part)] = name.get<std::string>();
+    parts.insert(std::stoi(part));
+  }
+  std::set<std::string> headers;
+  for (const auto& [name, hash] : facts.at("files").items())
+    if (name.rfind("skeleton/", 0) == 0 && fs::path(name).extension() == ".h") headers.insert(name.substr(9));
+
+  Answer answer;
+  Pipeline pipeline(expected, headers, parts, answer);
+  std::printf("pt-grade check-submission %s: what the grader will do with these files.\n", opt.tasks.c_str());
+  answer.heading("1. The files, taken as the grader takes them");
+  const bool taken = pipeline.take_files(opt.tasks);
+  const Submission& sub = pipeline.submission();
+  for (const auto& n : sub.notes) answer.details += indented(n);
+  if (!taken) {
+    std::string why = "submission rejected before building:";
+    for (const auto& p : sub.problems) why += "\n  " + p;
+    std::fputs(indented(why).c_str(), stdout);
+    std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
+    if (result.active())
+      result.write(classroom_stopped("fail", "The files: the grader would reject every part", why,
+                                     visible_points(build)));
+    return 1;
+  }
+  compare_with_tasks(source, sub, answer);
+  answer.heading("2. What each file includes (the grader's allowlist)");
+  pipeline.check_includes(nullptr);
+  answer.heading("3. The files the grader has its own copy of");
+  check_shipped_files(source, facts, answer);
+  answer.heading("4. Each part built on its own, as the grader builds it");
+  ReleaseBuild release_build(source, build, opt.build_dir, answer);
+  pipeline.build(release_build);
+
+  answer.heading("5. The visible tests");
+  const fs::path manifest_path = build / "tests" / "graded_manifest.json";
+  if (!fs::is_regular_file(manifest_path)) {
+    std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
+    if (result.active())
+      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
+                                     manifest_path.string() + " not found: the release is not built", 0));
+    return 2;
+  }
+  // The student cannot know whether the instructor counts the extension
+  // tasks, so they are shown at 0 points, as the grader shows them by default.
+  Manifest manifest = read_manifest(manifest_path.string());
+  leave_extensions_uncounted(manifest);
+  const Report report = grade_visible(opt, manifest, source, build, pipeline, answer);
+  print_check(report, pipeline, answer);
   if (result.active()) {
     std::map<int, ClassroomFile> files;
     for (const auto& f : sub.files) files[f.part] = {"tasks/" + f.name, f.text};
-    result.write(classroom_result(report, files, index_handouts((source / "handouts").string()), problems));
+    result.write(classroom_result(report, files, index_handouts((source / "handouts").string()), answer.problems));
   }
-  return problems.empty() ? 0 : 1;
+  return answer.problems.empty() ? 0 : 1;
 }
 
 }  // namespace pt::grade

@@ -1,6 +1,7 @@
 #pragma once
 // `pt-grade submission PATH`: grades a student's submission end to end
-// (docs/architecture.md, "The course loop"), in this order:
+// (docs/architecture.md, "The course loop"): the stages of pipeline.h with
+// the grader's ending, in this order:
 //
 //  1. read the grading kit's manifest (the trusted list of graded tests);
 //     results.json is written at once, every part 0 of its maximum;
@@ -23,12 +24,9 @@
 //
 // Time: each part's build and each part's grading have their own limit, and
 // the whole submission a budget (autograder/README.md has the numbers).
-#include <set>
 #include <string>
 #include <vector>
 
-#include "compile/dependency_check.h"
-#include "intake/submission_files.h"
 #include "run/grade_part.h"
 #include "sandbox/sandbox.h"
 
@@ -56,15 +54,5 @@ struct SubmissionOptions {
 // submission included), 2 when it could not be (no kit, a report that cannot
 // be written).
 int grade_submission(const SubmissionOptions& options);
-
-// The pieces `pt-grade check-submission` (check_submission.h) shares with the
-// grader, so that a student sees the grader's own verdicts and messages:
-//
-// step 3 for one task file: "" when it may be built, else why not (the
-// report's text); the instructor's source flags go to *flags.
-std::string intake_rejection(const TaskFile& file, const std::set<std::string>& framework_headers, std::string* flags);
-// What a failed build printed that a student needs: the compiler's errors
-// first, paths relative to tree_dir, ninja's progress left out.
-std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines = 40);
 
 }  // namespace pt::grade
