@@ -260,109 +260,159 @@ std::vector<TestResult*> cheapest_tier(const std::vector<TestResult*>& tests, co
 
 }  // namespace
 
-PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
-                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor,
-                        const std::string& worker, const ImageFolders* images) {
-  PartResult res = pending_part(part, tests, "no verdict");
-  res.binary = binary;
-  res.log = log_path;
-  res.graded = true;
-  std::map<std::string, size_t> index;
-  for (size_t i = 0; i < res.tests.size(); ++i) index[res.tests[i].test.name] = i;
-  std::ofstream log;
-  if (!log_path.empty()) log.open(log_path, std::ios::trunc);
+namespace {
 
-  const auto start = Clock::now();
-  const auto part_budget_end =
-      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.part_seconds));
-  const bool submission_first = limits.deadline < part_budget_end;
-  const auto part_end = std::min(part_budget_end, limits.deadline);
-  size_t ignored = 0, unknown = 0, timed_out = 0, crashed = 0;
-  std::set<std::string> hung_tasks;
-  int threads_at_main = 0;
-  uint64_t output_bytes = 0;
-  size_t tests_with_images = 0, images_beyond_bound = 0;
-  std::string image_folder_error;
-  auto unresolved = [&] {
+// A folder for one run's images (ImageFolders), removed at the end of the
+// run's turn however it ends.
+struct ImageFolder {
+  const ImageFolders* folders;
+  std::string path;
+  ImageFolder(const ImageFolders* f, std::string* error) : folders(f), path(f ? f->fresh(error) : "") {}
+  ~ImageFolder() {
+    if (!path.empty()) folders->discard(path);
+  }
+  ImageFolder(const ImageFolder&) = delete;
+  ImageFolder& operator=(const ImageFolder&) = delete;
+};
+
+// How one run of a binary (and its worker) ended, as the grader saw it.
+struct RunEnd {
+  RunOutcome run, worker_run;
+  bool worker_lost = false, worker_never_started = false, worker_broke_link = false;
+};
+
+// One binary's grading in progress. Its four jobs, once per run: choose the
+// tests of the next run, run them, take the verdicts and charge a test that
+// died, and decide whether to go on; then the notes for the instructor.
+class PartGrading {
+ public:
+  PartGrading(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
+              const std::string& log_path, const std::string& worker, const ImageFolders* images)
+      : res_(pending_part(part, tests, "no verdict")), limits_(limits), worker_(worker), images_(images),
+        start_(Clock::now()) {
+    res_.binary = binary;
+    res_.log = log_path;
+    res_.graded = true;
+    for (size_t i = 0; i < res_.tests.size(); ++i) index_[res_.tests[i].test.name] = i;
+    if (!log_path.empty()) log_.open(log_path, std::ios::trunc);
+    const auto budget_end =
+        start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.part_seconds));
+    submission_first_ = limits.deadline < budget_end;
+    part_end_ = std::min(budget_end, limits.deadline);
+  }
+
+  // Runs the binary until every test has its result or a reason it has none.
+  void run_all(Sandbox& sandbox) {
+    for (std::vector<TestResult*> left = unresolved(); !left.empty(); left = unresolved()) {
+      if (Clock::now() >= part_end_) {
+        charge_rest(TestResult::Status::NotRun,
+                    submission_first_ ? "not run: the submission's time budget was used up"
+                                      : "not run: the part's time budget of " + seconds_text(limits_.part_seconds) +
+                                            " was used up (by " + std::to_string(timed_out_) + " test(s) that hung)");
+        return;
+      }
+      const std::vector<TestResult*> next = next_tests(left);
+      RunRequest request = request_for(next);
+      ImageFolder folder(images_, &image_folder_error_);
+      if (!folder.path.empty()) {
+        request.output_dir = folder.path;
+        request.args.push_back(kImageDirFlag + folder.path);
+      }
+      RunWatch watch(request.key, limits_, part_end_, submission_first_);
+      const RunEnd end = run_once(sandbox, request, watch);
+      if (!go_on(end, watch, folder.path, next.size() == left.size())) return;
+    }
+  }
+
+  // The part's result: messages redacted and without the grader's folders,
+  // and the notes an instructor should read.
+  PartResult finish(const Redactor& redactor) {
+    res_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    size_t redacted = 0;
+    const std::vector<std::string> folders{
+        std::filesystem::path(res_.binary).parent_path().string(),
+        worker_.empty() ? "" : std::filesystem::path(worker_).parent_path().string()};
+    for (auto& t : res_.tests) {
+      redacted += redactor.redact(t.message) + redactor.redact(t.output);
+      hide_folders(t.message, folders);
+      hide_folders(t.output, folders);
+    }
+    add_notes(redacted);
+    return std::move(res_);
+  }
+
+ private:
+  std::vector<TestResult*> unresolved() {
     std::vector<TestResult*> left;
-    for (auto& t : res.tests)
+    for (auto& t : res_.tests)
       if (t.status == TestResult::Status::NotRun) left.push_back(&t);
     return left;
-  };
-  auto charge_rest = [&](TestResult::Status status, const std::string& why) {
+  }
+
+  void charge_rest(TestResult::Status status, const std::string& why) {
     for (TestResult* t : unresolved()) {
       t->status = status;
       t->message = why;
     }
-  };
+  }
 
-  for (std::vector<TestResult*> left = unresolved(); !left.empty(); left = unresolved()) {
-    if (Clock::now() >= part_end) {
-      charge_rest(TestResult::Status::NotRun,
-                  submission_first ? "not run: the submission's time budget was used up"
-                                   : "not run: the part's time budget of " + seconds_text(limits.part_seconds) +
-                                         " was used up (by " + std::to_string(timed_out) + " test(s) that hung)");
-      break;
-    }
-    // The tests of a task that has hung wait until every other test has run:
-    // the budget they may use up is then only theirs to lose.
+  // The tests of a task that has hung wait until every other test has run:
+  // the budget they may use up is then only theirs to lose.
+  std::vector<TestResult*> next_tests(const std::vector<TestResult*>& left) const {
     std::vector<TestResult*> next;
     for (TestResult* t : left)
-      if (!hung_tasks.count(t->test.task)) next.push_back(t);
+      if (!hung_tasks_.count(t->test.task)) next.push_back(t);
     if (next.empty()) next = left;
-    if (limits.stop_at_first_failure) next = cheapest_tier(next, limits.cheap_first);
+    if (limits_.stop_at_first_failure) next = cheapest_tier(next, limits_.cheap_first);
+    return next;
+  }
+
+  RunRequest request_for(const std::vector<TestResult*>& tests) const {
     std::string filter = "--gtest_filter=";
-    for (const TestResult* t : next) filter += t->test.name + (t == next.back() ? "" : ":");
+    for (const TestResult* t : tests) filter += t->test.name + (t == tests.back() ? "" : ":");
     // The test main's own limit (support/test_main.cpp) prints the hung
     // test's task and stack just before this one ends the run.
     char timeout_flag[64];
-    std::snprintf(timeout_flag, sizeof timeout_flag, "--pt_test_timeout=%g", limits.test_seconds);
-    RunRequest request{binary, {kChannelFlag, filter, "--gtest_color=no", timeout_flag}, make_key(), ""};
-    if (limits.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
-    // Removed at the end of this run's turn, however it ends.
-    struct ImageFolder {
-      const ImageFolders* folders;
-      std::string path;
-      ~ImageFolder() {
-        if (!path.empty()) folders->discard(path);
-      }
-    } image_folder{images, images ? images->fresh(&image_folder_error) : ""};
-    if (!image_folder.path.empty()) {
-      request.output_dir = image_folder.path;
-      request.args.push_back(kImageDirFlag + image_folder.path);
-    }
-    RunWatch watch(request.key, limits, part_end, submission_first);
-    RunOutcome worker_run;
-    const RunOutcome run =
-        worker.empty() ? sandbox.run(request, watch) : run_with_worker(sandbox, request, watch, worker, worker_run);
-    const bool worker_exit = !worker.empty() && run.exit.how == Exit::How::Exited;
-    const bool worker_lost = worker_exit && run.exit.code == boundary::kWorkerLost;
-    const bool worker_never_started = worker_exit && run.exit.code == boundary::kWorkerNeverStarted;
-    const bool worker_broke_link = worker_exit && run.exit.code == boundary::kWorkerBrokeLink;
-    ++res.runs;
-    output_bytes += run.output_bytes;
-    if (log) {
-      log << "===== pt-grade: run " << res.runs << ": " << binary;
-      for (const auto& a : request.args) log << " " << (a.size() > 200 ? a.substr(0, 200) + "..." : a);
-      log << "\n" << run.output << "\n===== pt-grade: run " << res.runs << " " << run.exit.describe() << "\n";
-      if (!worker.empty())
-        log << "===== pt-grade: its worker " << worker << "\n"
-            << worker_run.output << "\n===== pt-grade: the worker " << worker_run.exit.describe() << "\n";
-      log << std::flush;
-    }
+    std::snprintf(timeout_flag, sizeof timeout_flag, "--pt_test_timeout=%g", limits_.test_seconds);
+    RunRequest request{res_.binary, {kChannelFlag, filter, "--gtest_color=no", timeout_flag}, make_key(), ""};
+    if (limits_.stop_at_first_failure) request.args.push_back("--gtest_fail_fast");
+    return request;
+  }
 
-    const VerdictStream& s = watch.stream();
-    bool hidden_ran = false;  // in this run, before the test that died
-    ignored += s.ignored();
-    threads_at_main = std::max(threads_at_main, s.threads_at_main());
+  RunEnd run_once(Sandbox& sandbox, const RunRequest& request, RunWatch& watch) {
+    RunEnd e;
+    e.run = worker_.empty() ? sandbox.run(request, watch)
+                            : run_with_worker(sandbox, request, watch, worker_, e.worker_run);
+    const bool worker_exit = !worker_.empty() && e.run.exit.how == Exit::How::Exited;
+    e.worker_lost = worker_exit && e.run.exit.code == boundary::kWorkerLost;
+    e.worker_never_started = worker_exit && e.run.exit.code == boundary::kWorkerNeverStarted;
+    e.worker_broke_link = worker_exit && e.run.exit.code == boundary::kWorkerBrokeLink;
+    ++res_.runs;
+    output_bytes_ += e.run.output_bytes;
+    if (log_) {
+      log_ << "===== pt-grade: run " << res_.runs << ": " << res_.binary;
+      for (const auto& a : request.args) log_ << " " << (a.size() > 200 ? a.substr(0, 200) + "..." : a);
+      log_ << "\n" << e.run.output << "\n===== pt-grade: run " << res_.runs << " " << e.run.exit.describe() << "\n";
+      if (!worker_.empty())
+        log_ << "===== pt-grade: its worker " << worker_ << "\n"
+             << e.worker_run.output << "\n===== pt-grade: the worker " << e.worker_run.exit.describe() << "\n";
+      log_ << std::flush;
+    }
+    return e;
+  }
+
+  // The run's verdicts, each for a test still without one; with a failing
+  // test's images taken from the run's folder. Returns how many it resolved;
+  // *hidden_ran: a hidden test among them.
+  size_t take_verdicts(const VerdictStream& s, const std::string& image_folder, bool* hidden_ran) {
     size_t resolved = 0;
     for (const Verdict& v : s.verdicts()) {
-      auto it = index.find(v.test);
-      if (it == index.end()) {
-        ++unknown;
+      auto it = index_.find(v.test);
+      if (it == index_.end()) {
+        ++unknown_;
         continue;
       }
-      TestResult& t = res.tests[it->second];
+      TestResult& t = res_.tests[it->second];
       if (t.status != TestResult::Status::NotRun) continue;
       t.status = v.passed ? TestResult::Status::Passed
                  : v.skipped ? TestResult::Status::Skipped
@@ -371,119 +421,157 @@ PartResult grade_binary(int part, const std::string& binary, const PartManifest&
       if (t.status == TestResult::Status::Skipped) t.message = "skipped (a skipped test earns no points)";
       if (t.status == TestResult::Status::Failed && t.message.empty()) t.message = "failed without a message";
       // Every process of the run is dead: nothing changes the folder now.
-      if (t.status == TestResult::Status::Failed && !image_folder.path.empty() && !images->kept) {
-        std::string refused;
-        if (tests_with_images < kMaxImageTestsPerPart)
-          t.images = take_test_images(image_folder.path, t.test.name, &refused);
-        else if (t.message.find(image_folder.path + "/" + t.test.name + "/") != std::string::npos)
-          ++images_beyond_bound;
-        tests_with_images += !t.images.empty() || !refused.empty();
-        if (!refused.empty())
-          res.notes.push_back("images of the failing " + (t.test.hidden ? std::string("hidden test") : t.test.name) +
-                              " refused:\n" + capped(refused, 2048));
-        point_at_report(t.message, image_folder.path, t.test.name, !t.images.empty());
-      }
+      if (t.status == TestResult::Status::Failed && !image_folder.empty() && !images_->kept)
+        take_images(t, image_folder);
       t.seconds = v.seconds;
-      hidden_ran = hidden_ran || t.test.hidden;
+      *hidden_ran = *hidden_ran || t.test.hidden;
       ++resolved;
     }
-    if (worker_never_started) {
-      const std::string why = "the worker running the task's code " + worker_run.exit.describe() +
+    return resolved;
+  }
+
+  void take_images(TestResult& t, const std::string& folder) {
+    std::string refused;
+    if (tests_with_images_ < kMaxImageTestsPerPart)
+      t.images = take_test_images(folder, t.test.name, &refused);
+    else if (t.message.find(folder + "/" + t.test.name + "/") != std::string::npos)
+      ++images_beyond_bound_;
+    tests_with_images_ += !t.images.empty() || !refused.empty();
+    if (!refused.empty())
+      res_.notes.push_back("images of the failing " + (t.test.hidden ? std::string("hidden test") : t.test.name) +
+                           " refused:\n" + capped(refused, 2048));
+    point_at_report(t.message, folder, t.test.name, !t.images.empty());
+  }
+
+  // The test running when the run ended, charged with how it ended (a hang,
+  // a crash, the worker's death); true when there was one.
+  bool charge_running(const VerdictStream& s, const RunEnd& e, const RunWatch& watch, bool hidden_ran) {
+    const auto it = index_.find(s.running());
+    if (it == index_.end() || res_.tests[it->second].status != TestResult::Status::NotRun) return false;
+    TestResult& t = res_.tests[it->second];
+    const bool hung = e.run.exit.how == Exit::How::TimedOut;
+    t.status = hung ? TestResult::Status::TimedOut : TestResult::Status::Crashed;
+    t.message = e.worker_broke_link ? "the worker running the task's code broke the link to the tests (it wrote what "
+                                      "no honest worker writes) during this test"
+                : e.worker_lost ? "the worker running the task's code " + e.worker_run.exit.describe() +
+                                      " during this test"
+                : e.run.exit.how == Exit::How::Exited ? e.run.exit.describe() + " during this test"
+                                                      : why_died(e.run.exit, watch, limits_);
+    // The worker's output is the whole run's, hidden tests' calls included:
+    // shown only when no hidden test ran before this one in the run.
+    if (e.worker_lost || e.worker_broke_link)
+      t.output = hidden_ran ? "(the worker's output is not shown: hidden tests ran in the same process before this "
+                              "test)"
+                            : last_lines(e.worker_run.output);
+    else
+      t.output = own_output(e.run.output, t.test.name);
+    (hung ? timed_out_ : crashed_) += 1;
+    if (hung) hung_tasks_.insert(t.test.task);
+    return true;
+  }
+
+  // Takes what the run showed; false when the part is over (every test has
+  // its result, or what is left can have none).
+  bool go_on(const RunEnd& e, const RunWatch& watch, const std::string& image_folder, bool asked_for_all) {
+    const VerdictStream& s = watch.stream();
+    bool hidden_ran = false;  // in this run, before the test that died
+    ignored_ += s.ignored();
+    threads_at_main_ = std::max(threads_at_main_, s.threads_at_main());
+    size_t resolved = take_verdicts(s, image_folder, &hidden_ran);
+    if (e.worker_never_started) {
+      const std::string why = "the worker running the task's code " + e.worker_run.exit.describe() +
                               " before its main started";
       for (TestResult* t : unresolved()) {
         t->status = TestResult::Status::NoVerdict;
         t->message = "no verdict: " + why;
-        t->output = last_lines(worker_run.output);
+        t->output = last_lines(e.worker_run.output);
       }
-      res.notes.push_back(why + " (a static initializer?): every test of the part is charged with it");
-      break;
+      res_.notes.push_back(why + " (a static initializer?): every test of the part is charged with it");
+      return false;
     }
-    if (auto it = index.find(s.running()); it != index.end() && res.tests[it->second].status == TestResult::Status::NotRun) {
-      TestResult& t = res.tests[it->second];
-      const bool hung = run.exit.how == Exit::How::TimedOut;
-      t.status = hung ? TestResult::Status::TimedOut : TestResult::Status::Crashed;
-      t.message = worker_broke_link ? "the worker running the task's code broke the link to the tests (it wrote what "
-                                      "no honest worker writes) during this test"
-                  : worker_lost ? "the worker running the task's code " + worker_run.exit.describe() + " during this test"
-                  : run.exit.how == Exit::How::Exited ? run.exit.describe() + " during this test"
-                                                      : why_died(run.exit, watch, limits);
-      // The worker's output is the whole run's, hidden tests' calls included:
-      // shown only when no hidden test ran before this one in the run.
-      if (worker_lost || worker_broke_link)
-        t.output = hidden_ran ? "(the worker's output is not shown: hidden tests ran in the same process before this "
-                                "test)"
-                              : last_lines(worker_run.output);
-      else
-        t.output = own_output(run.output, t.test.name);
-      (hung ? timed_out : crashed) += 1;
-      if (hung) hung_tasks.insert(t.test.task);
-      ++resolved;
-    }
-
+    resolved += charge_running(s, e, watch, hidden_ran);
     bool failed = false;
-    for (const auto& t : res.tests)
-      failed = failed || t.died() || t.status == TestResult::Status::Failed;
-    if (limits.stop_at_first_failure && failed) {
+    for (const auto& t : res_.tests) failed = failed || t.died() || t.status == TestResult::Status::Failed;
+    if (limits_.stop_at_first_failure && failed) {
       charge_rest(TestResult::Status::NotRun, "not run: grading stopped at the first failing test");
-      break;
+      return false;
     }
     if (!s.hello()) {
-      charge_rest(TestResult::Status::NoVerdict, "no verdict: the binary " + why_died(run.exit, watch, limits) +
+      charge_rest(TestResult::Status::NoVerdict, "no verdict: the binary " + why_died(e.run.exit, watch, limits_) +
                                                      " before its test main started");
-      res.notes.push_back("the binary reported nothing: it " + run.exit.describe() +
-                          " before its test main started (a static initializer?)");
-      break;
+      res_.notes.push_back("the binary reported nothing: it " + e.run.exit.describe() +
+                           " before its test main started (a static initializer?)");
+      return false;
     }
     if (resolved == 0) {
       charge_rest(TestResult::Status::NoVerdict,
-                  "no verdict: the binary " + why_died(run.exit, watch, limits) + " without running this test");
-      break;
+                  "no verdict: the binary " + why_died(e.run.exit, watch, limits_) + " without running this test");
+      return false;
     }
-    if (s.done() && next.size() == left.size() && !unresolved().empty()) {
+    if (s.done() && asked_for_all && !unresolved().empty()) {
       charge_rest(TestResult::Status::NoVerdict,
                   "no verdict: the binary finished without running this test (is the manifest from another build?)");
-      break;
+      return false;
     }
+    return true;
   }
-  res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  size_t redacted = 0;
-  const std::vector<std::string> folders{std::filesystem::path(binary).parent_path().string(),
-                                         worker.empty() ? "" : std::filesystem::path(worker).parent_path().string()};
-  for (auto& t : res.tests) {
-    redacted += redactor.redact(t.message) + redactor.redact(t.output);
-    hide_folders(t.message, folders);
-    hide_folders(t.output, folders);
-  }
-  if (redacted > 0)
-    res.notes.push_back(std::to_string(redacted) +
-                        " line(s) of the solution were removed from the tests' messages: the submission printed "
-                        "solution text (read its task file)");
 
-  if (res.runs > 1)
-    res.notes.push_back("the binary was started " + std::to_string(res.runs) + " times: " + std::to_string(crashed) +
-                        " test(s) crashed and " + std::to_string(timed_out) +
-                        " hung; each was charged alone and the binary restarted on the tests left");
-  if (threads_at_main > 1)
-    res.notes.push_back(std::to_string(threads_at_main - 1) +
-                        " thread(s) were already running when the test main started: only a static initializer in "
-                        "the submission can start one (read its task file)");
-  if (ignored > 0)
-    res.notes.push_back(std::to_string(ignored) +
-                        " line(s) on the verdict channel did not carry the run's key and were ignored: only code under "
-                        "test writes such lines (read its task file)");
-  if (unknown > 0)
-    res.notes.push_back(std::to_string(unknown) +
-                        " verdict(s) for tests the manifest does not list were ignored (an out-of-date manifest? "
-                        "build the target graded_manifest)");
-  if (images_beyond_bound > 0)
-    res.notes.push_back("the images of " + std::to_string(images_beyond_bound) + " more failing test(s) were not kept: " +
-                        std::to_string(kMaxImageTestsPerPart) + " tests' images per part at most");
-  if (!image_folder_error.empty())
-    res.notes.push_back("no folder for the image tests' images: " + image_folder_error);
-  if (output_bytes > (1u << 20))
-    res.notes.push_back("the binary printed " + std::to_string(output_bytes >> 20) +
-                        " MiB; the log keeps only the head and the tail of each run");
-  return res;
+  void add_notes(size_t redacted) {
+    auto note = [this](const std::string& text) { res_.notes.push_back(text); };
+    if (redacted > 0)
+      note(std::to_string(redacted) +
+           " line(s) of the solution were removed from the tests' messages: the submission printed solution text "
+           "(read its task file)");
+    if (res_.runs > 1)
+      note("the binary was started " + std::to_string(res_.runs) + " times: " + std::to_string(crashed_) +
+           " test(s) crashed and " + std::to_string(timed_out_) +
+           " hung; each was charged alone and the binary restarted on the tests left");
+    if (threads_at_main_ > 1)
+      note(std::to_string(threads_at_main_ - 1) +
+           " thread(s) were already running when the test main started: only a static initializer in the "
+           "submission can start one (read its task file)");
+    if (ignored_ > 0)
+      note(std::to_string(ignored_) +
+           " line(s) on the verdict channel did not carry the run's key and were ignored: only code under test "
+           "writes such lines (read its task file)");
+    if (unknown_ > 0)
+      note(std::to_string(unknown_) +
+           " verdict(s) for tests the manifest does not list were ignored (an out-of-date manifest? build the "
+           "target graded_manifest)");
+    if (images_beyond_bound_ > 0)
+      note("the images of " + std::to_string(images_beyond_bound_) + " more failing test(s) were not kept: " +
+           std::to_string(kMaxImageTestsPerPart) + " tests' images per part at most");
+    if (!image_folder_error_.empty()) note("no folder for the image tests' images: " + image_folder_error_);
+    if (output_bytes_ > (1u << 20))
+      note("the binary printed " + std::to_string(output_bytes_ >> 20) +
+           " MiB; the log keeps only the head and the tail of each run");
+  }
+
+  PartResult res_;
+  const GradeLimits& limits_;
+  const std::string worker_;
+  const ImageFolders* images_;
+  const Clock::time_point start_;
+  Clock::time_point part_end_;
+  bool submission_first_ = false;
+  std::map<std::string, size_t> index_;
+  std::ofstream log_;
+  std::set<std::string> hung_tasks_;
+  size_t ignored_ = 0, unknown_ = 0, timed_out_ = 0, crashed_ = 0;
+  int threads_at_main_ = 0;
+  uint64_t output_bytes_ = 0;
+  size_t tests_with_images_ = 0, images_beyond_bound_ = 0;
+  std::string image_folder_error_;
+};
+
+}  // namespace
+
+PartResult grade_binary(int part, const std::string& binary, const PartManifest& tests, const GradeLimits& limits,
+                        Sandbox& sandbox, const std::string& log_path, const Redactor& redactor,
+                        const std::string& worker, const ImageFolders* images) {
+  PartGrading grading(part, binary, tests, limits, log_path, worker, images);
+  grading.run_all(sandbox);
+  return grading.finish(redactor);
 }
 
 }  // namespace pt::grade
