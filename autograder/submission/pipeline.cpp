@@ -18,8 +18,8 @@ std::string joined_findings(const std::vector<SourceFinding>& found, const std::
   return capped_list(lines, 100, 512);
 }
 
-}  // namespace
-
+// Stage 2 for one task file: "" when it may be built, else why not (the
+// report's text); the instructor's source flags go to *flags.
 std::string intake_rejection(const TaskFile& f, const std::set<std::string>& headers, std::string* flags) {
   if (f.too_large)
     return f.where + " is larger than " + std::to_string(kMaxTaskFileBytes >> 20) + " MiB: rejected before building";
@@ -30,9 +30,12 @@ std::string intake_rejection(const TaskFile& f, const std::set<std::string>& hea
   return "";
 }
 
-// What a failed build printed that a student needs: the compiler's errors
-// first (with the lines that locate them), ninja's progress lines dropped.
-std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines) {
+}  // namespace
+
+// The compiler's errors first (with the lines that locate them), ninja's
+// progress lines dropped.
+std::string compiler_errors(const std::string& output, const std::string& tree_dir) {
+  const size_t max_lines = 40;
   std::istringstream in(output);
   std::vector<std::string> kept;
   const std::string prefix = tree_dir + "/";

@@ -90,12 +90,8 @@ class Pipeline {
   std::map<int, BuiltPart> built_;
 };
 
-// Stage 2 for one task file: "" when it may be built, else why not (the
-// report's text); the instructor's source flags go to *flags.
-std::string intake_rejection(const TaskFile& file, const std::set<std::string>& framework_headers, std::string* flags);
-
 // What a failed build printed that a student needs: the compiler's errors
-// first, paths relative to tree_dir, ninja's progress left out.
-std::string compiler_errors(const std::string& output, const std::string& tree_dir, size_t max_lines = 40);
+// first, paths relative to tree_dir, ninja's progress left out, 40 lines at most.
+std::string compiler_errors(const std::string& output, const std::string& tree_dir);
 
 }  // namespace pt::grade
