@@ -18,15 +18,15 @@
 #include <nlohmann/json.hpp>
 
 #include "build_paths.h"
-#include "check_submission.h"
-#include "checks.h"
-#include "command.h"
-#include "grade_part.h"
-#include "manifest.h"
-#include "redact.h"
-#include "report.h"
-#include "sandbox.h"
-#include "submission.h"
+#include "process/command.h"
+#include "report/redact.h"
+#include "report/report.h"
+#include "run/checks.h"
+#include "run/grade_part.h"
+#include "run/manifest.h"
+#include "sandbox/sandbox.h"
+#include "submission/check_submission.h"
+#include "submission/submission.h"
 
 namespace {
 
@@ -381,7 +381,7 @@ Command add_submission(CLI::App& app, Common& c) {
                 "count the points of extension tasks (P5T3); otherwise they are graded at 0 points");
   cmd->add_flag("--leaderboard", sub->leaderboard,
                 "add Gradescope's leaderboard: Part 2's SAH cost against the solution's, primitive tests and node "
-                "visits per ray (autograder/leaderboard.h)");
+                "visits per ray (autograder/report/leaderboard.h)");
   return {cmd, [sub, &c] {
     sub->limits = c.opt.limits;
     sub->sandbox = c.opt.sandbox;

@@ -1,5 +1,5 @@
 // pt-library-check: the grader's trusted half of the report's renders
-// (autograder/report_renders.h). The renderer under test only writes an
+// (autograder/report/report_renders.h). The renderer under test only writes an
 // EXR; this tool, built by the instructor and shipped compiled in the grading
 // kit, decides what the EXR shows.
 //

@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <sched.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -23,9 +22,8 @@
 #include "crossing.h"
 #include "generator_calls.h"
 #include "one_cpu.h"
+#include "process/launcher.h"
 #include "scene_codec.h"
-
-extern char** environ;
 
 namespace pt::boundary {
 namespace {
@@ -70,6 +68,8 @@ void share_one_cpu() {
 
 // Starts the worker with the requests on its descriptor 4 and its answers on 3.
 void start_worker(const std::string& path, int& in, int& out) {
+  // Said here: an exec that fails in the child reads as a worker that never started.
+  if (::access(path.c_str(), X_OK) != 0) worker_lost("could not start " + path + ": " + std::strerror(errno));
   share_one_cpu();
   int requests[2], answers[2];
   if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0) worker_lost("pipe failed");
@@ -79,27 +79,27 @@ void start_worker(const std::string& path, int& in, int& out) {
     ::close(*fd);
     *fd = high;
   }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, answers[1], 3);
-  posix_spawn_file_actions_adddup2(&actions, requests[0], 4);
-  posix_spawn_file_actions_addclosefrom_np(&actions, 5);
   // The worker dies with the thread that started it (PR_SET_PDEATHSIG), so a
   // thread that lives as long as this process starts it, whichever thread
   // asks first: a renderer's pool thread ends with its render.
   auto spawned = std::make_shared<std::promise<int>>();
   std::future<int> result = spawned->get_future();
-  std::thread([spawned, &actions, &path] {
+  std::thread([spawned, &path, &requests, &answers] {
     char* argv[] = {const_cast<char*>(path.c_str()), nullptr};
-    pid_t pid = 0;
-    spawned->set_value(::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ));
+    grade::LaunchOptions launch;
+    launch.child_ends = {answers[1], requests[0]};
+    // Only what is async-signal-safe runs in the copy of this threaded process.
+    grade::Child worker(launch, [&] {
+      if (::dup2(answers[1], 3) == 3 && ::dup2(requests[0], 4) == 4) {
+        ::close_range(5, ~0u, 0);
+        ::execv(argv[0], argv);
+      }
+    });
+    spawned->set_value(worker.started() ? 0 : worker.start_error());
     for (;;) ::pause();
   }).detach();
   const int err = result.get();
-  posix_spawn_file_actions_destroy(&actions);
   if (err != 0) worker_lost("could not start " + path + ": " + std::strerror(err));
-  ::close(answers[1]);
-  ::close(requests[0]);
   in = answers[0];
   out = requests[1];
 }

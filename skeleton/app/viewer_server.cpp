@@ -215,10 +215,29 @@ struct ViewerServer::Impl {
     return j;
   }
 
-  void routes();
+  // The server's endpoints, by what they serve.
+  void routes() {
+    guard_requests();
+    page_routes();
+    image_routes();
+    control_routes();
+    camera_routes();
+    inspect_routes();
+    compare_routes();
+  }
+  void guard_requests();
+  void page_routes();
+  void image_routes();
+  void control_routes();
+  void camera_routes();
+  void inspect_routes();
+  void compare_routes();
+  void send_image_of(const std::string& kind, httplib::Response& res);
 };
 
-void ViewerServer::Impl::routes() {
+// Where requests may come from, how large they may be, and how an error or an
+// exception becomes a response.
+void ViewerServer::Impl::guard_requests() {
   // httplib's default also sets SO_REUSEPORT, which lets a second viewer
   // bind the same port and take half the requests: only SO_REUSEADDR here.
   http.set_socket_options([](socket_t sock) {
@@ -245,39 +264,22 @@ void ViewerServer::Impl::routes() {
       send_error(res, 500, e.what());
     }
   });
+}
 
+// The page, its script and the render's status.
+void ViewerServer::Impl::page_routes() {
   http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(kViewerHtml, "text/html; charset=utf-8"); });
   http.Get("/viewer.js", [](const httplib::Request&, httplib::Response& res) {
     res.set_content(kViewerJs, "text/javascript; charset=utf-8");
   });
   http.Get("/api/status", [this](const httplib::Request&, httplib::Response& res) { send_json(res, status_json()); });
+}
 
+// The render, its sample rate, the library's reference and their difference,
+// as PNGs; the linear render as floats.
+void ViewerServer::Impl::image_routes() {
   http.Get("/api/image", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::string kind = req.has_param("kind") ? req.get_param_value("kind") : "render";
-    double exposure;
-    int cap;
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      exposure = settings.exposure;
-      cap = settings.render.ns_aa;
-    }
-    if (kind == "render") return send_image(res, session.snapshot().image, exposure);
-    if (kind == "rate") {
-      const Snapshot snap = session.snapshot();
-      return send_image(res, sample_rate_image(snap.samples, snap.image.width, snap.image.height, cap), 0.0);
-    }
-    if (kind != "reference" && kind != "difference")
-      throw std::invalid_argument("kind=" + kind + ": expected render, rate, reference or difference");
-    std::lock_guard<std::mutex> lock(mutex);
-    const LibraryReference* ref = library_reference();
-    if (!ref) return send_error(res, 404, "this scene has no library reference image");
-    if (kind == "reference") return send_image(res, ref->image, exposure);
-    const Image render = session.snapshot().image;
-    if (render.width != ref->image.width || render.height != ref->image.height)
-      return send_error(res, 409, "the render is " + std::to_string(render.width) + "x" + std::to_string(render.height) +
-                                      ", the reference " + std::to_string(ref->image.width) + "x" +
-                                      std::to_string(ref->image.height) + ": use the library settings first");
-    send_image(res, difference_image(render, ref->image), 0.0);
+    send_image_of(req.has_param("kind") ? req.get_param_value("kind") : "render", res);
   });
 
   // The linear image as float32 RGB, rows from the top (what an EXR holds).
@@ -291,7 +293,38 @@ void ViewerServer::Impl::routes() {
     res.set_content(std::string(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(float)),
                     "application/octet-stream");
   });
+}
 
+void ViewerServer::Impl::send_image_of(const std::string& kind, httplib::Response& res) {
+  double exposure;
+  int cap;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    exposure = settings.exposure;
+    cap = settings.render.ns_aa;
+  }
+  if (kind == "render") return send_image(res, session.snapshot().image, exposure);
+  if (kind == "rate") {
+    const Snapshot snap = session.snapshot();
+    return send_image(res, sample_rate_image(snap.samples, snap.image.width, snap.image.height, cap), 0.0);
+  }
+  if (kind != "reference" && kind != "difference")
+    throw std::invalid_argument("kind=" + kind + ": expected render, rate, reference or difference");
+  std::lock_guard<std::mutex> lock(mutex);
+  const LibraryReference* ref = library_reference();
+  if (!ref) return send_error(res, 404, "this scene has no library reference image");
+  if (kind == "reference") return send_image(res, ref->image, exposure);
+  const Image render = session.snapshot().image;
+  if (render.width != ref->image.width || render.height != ref->image.height)
+    return send_error(res, 409, "the render is " + std::to_string(render.width) + "x" + std::to_string(render.height) +
+                                    ", the reference " + std::to_string(ref->image.width) + "x" +
+                                    std::to_string(ref->image.height) + ": use the library settings first");
+  send_image(res, difference_image(render, ref->image), 0.0);
+}
+
+// The render's settings; pausing, resuming, stopping or restarting it;
+// rendering one cell of the image.
+void ViewerServer::Impl::control_routes() {
   http.Post("/api/settings", [this](const httplib::Request& req, httplib::Response& res) {
     const json body = parse_body(req);
     std::lock_guard<std::mutex> lock(mutex);
@@ -304,29 +337,6 @@ void ViewerServer::Impl::routes() {
     if (render_part != old_part) restart();
     send_json(res, settings_json(settings));
   });
-
-  http.Get("/api/camera", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_header("Content-Disposition", "attachment; filename=\"camera.json\"");
-    send_json(res, camera_json(session.view()));
-  });
-  http.Post("/api/camera", [this](const httplib::Request& req, httplib::Response& res) {
-    const ViewState v = view_from_json(parse_body(req));
-    std::lock_guard<std::mutex> lock(mutex);
-    current_view = v;
-    restart();
-    send_json(res, camera_json(v));
-  });
-  http.Post("/api/camera/reset", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::string to = req.has_param("to") ? req.get_param_value("to") : "scene";
-    if (to != "scene" && to != "course") throw std::invalid_argument("to=" + to + ": expected scene or course");
-    std::lock_guard<std::mutex> lock(mutex);
-    const RenderSettings& r = settings.render;
-    const BBox bounds = scene.bounds();
-    current_view = to == "scene" ? scene_view : view_of(course_camera(loaded_camera, bounds, r.width, r.height), bounds.centroid());
-    restart();
-    send_json(res, camera_json(current_view));
-  });
-
   http.Post("/api/control", [this](const httplib::Request& req, httplib::Response& res) {
     const std::string action = req.has_param("action") ? req.get_param_value("action") : "";
     std::lock_guard<std::mutex> lock(mutex);
@@ -355,7 +365,35 @@ void ViewerServer::Impl::routes() {
     restart(c);
     send_json(res, {{"ok", true}});
   });
+}
 
+// The camera: saved as a file, set, or reset to the scene's or the course's.
+void ViewerServer::Impl::camera_routes() {
+  http.Get("/api/camera", [this](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Content-Disposition", "attachment; filename=\"camera.json\"");
+    send_json(res, camera_json(session.view()));
+  });
+  http.Post("/api/camera", [this](const httplib::Request& req, httplib::Response& res) {
+    const ViewState v = view_from_json(parse_body(req));
+    std::lock_guard<std::mutex> lock(mutex);
+    current_view = v;
+    restart();
+    send_json(res, camera_json(v));
+  });
+  http.Post("/api/camera/reset", [this](const httplib::Request& req, httplib::Response& res) {
+    const std::string to = req.has_param("to") ? req.get_param_value("to") : "scene";
+    if (to != "scene" && to != "course") throw std::invalid_argument("to=" + to + ": expected scene or course");
+    std::lock_guard<std::mutex> lock(mutex);
+    const RenderSettings& r = settings.render;
+    const BBox bounds = scene.bounds();
+    current_view = to == "scene" ? scene_view : view_of(course_camera(loaded_camera, bounds, r.width, r.height), bounds.centroid());
+    restart();
+    send_json(res, camera_json(current_view));
+  });
+}
+
+// The inspectors: a node of the BVH, the path through a pixel.
+void ViewerServer::Impl::inspect_routes() {
   http.Get("/api/bvh", [this](const httplib::Request& req, httplib::Response& res) {
     const std::string path = req.has_param("path") ? req.get_param_value("path") : "";
     if (path.size() > 4096) throw std::invalid_argument("path: longer than any tree this viewer walks");
@@ -375,6 +413,10 @@ void ViewerServer::Impl::routes() {
     j["samples"] = snap.samples[size_t(row) * r.width + x];
     send_json(res, j);
   });
+}
+
+// The render against the scene library's reference, and its settings.
+void ViewerServer::Impl::compare_routes() {
   http.Get("/api/compare", [this](const httplib::Request&, httplib::Response& res) { send_json(res, compare_json()); });
   http.Post("/api/compare/library-settings", [this](const httplib::Request&, httplib::Response& res) {
     std::lock_guard<std::mutex> lock(mutex);

@@ -1,5 +1,5 @@
 // Not graded: the measurements behind the Part 2 leaderboard (pt-grade
-// submission --leaderboard, autograder/leaderboard.h), work counted as the
+// submission --leaderboard, autograder/report/leaderboard.h), work counted as the
 // quality tests count it (support/bvh_checks.h), never time: on two fixed
 // scenes, a mesh and the elongated fibres (where a split without a cost model
 // is 5x the baseline's SAH cost), the tree's SAH cost, and the primitive

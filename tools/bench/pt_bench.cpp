@@ -200,11 +200,11 @@ void tree_stats(const BVHNode* root, BuildResult* b) {
   return ours == kInf || std::abs(ours - other) <= 1e-5 * (diag + std::abs(ours));
 }
 
-#ifdef PT_HAVE_EMBREE
+// A ray in floats, as Embree takes it.
 struct FRay {
   float o[3], d[3], tnear, tfar;
 };
-std::vector<FRay> to_float(const std::vector<Ray>& rays) {
+[[maybe_unused]] std::vector<FRay> to_float(const std::vector<Ray>& rays) {
   std::vector<FRay> out(rays.size());
   for (size_t i = 0; i < rays.size(); ++i) {
     const Ray& r = rays[i];
@@ -219,6 +219,7 @@ std::vector<FRay> to_float(const std::vector<Ray>& rays) {
   return out;
 }
 
+#ifdef PT_HAVE_EMBREE
 // The triangles of the scene as one float soup; false if it holds anything else.
 bool float_mesh(const BenchScene& s, FloatMesh* m) {
   for (const auto& p : s.scene.primitives) {
@@ -243,47 +244,50 @@ bool embree_monitor(void*, ssize_t bytes, bool) {
 #endif
 
 // --- One scene ------------------------------------------------------------------------
-SceneResult run_scene(BenchScene& s, const Options& opt) {
-  SceneResult res;
-  res.name = s.name;
-  res.description = s.description;
-  res.triangles = s.triangle_count();
-  res.primitives = s.scene.primitives.size();
-  const std::vector<Primitive*> prims = s.prims();
-  const BBox bounds = s.bounds();
-  res.diag = glm::length(bounds.extent());
-  const bool big = prims.size() > 100000;
-  const int build_reps = big ? (opt.quick ? 1 : 3) : opt.reps;
-
-  // Builds, interleaved run by run: ours, then Embree high and medium.
+// What each query is run on: our BVH, and where built, Embree's two trees and
+// the ladder's steps.
+struct Accelerators {
   std::unique_ptr<BVHAccel> bvh;
 #ifdef PT_HAVE_EMBREE
   std::unique_ptr<EmbreeDevice> device;
   std::unique_ptr<EmbreeScene> emb_high, emb_medium;
   FloatMesh fmesh;
+#endif
+#ifdef PT_HAVE_LADDER
+  std::vector<std::unique_ptr<ladder::Step>> steps;
+#endif
+};
+
+// The builds, interleaved run by run: ours, then Embree high and medium;
+// then our tree's statistics and the ladder's steps.
+Accelerators build_all(BenchScene& s, const std::vector<Primitive*>& prims, const Options& opt, SceneResult& res) {
+  Accelerators a;
+  const bool big = prims.size() > 100000;
+  const int build_reps = big ? (opt.quick ? 1 : 3) : opt.reps;
+#ifdef PT_HAVE_EMBREE
   if (!opt.embree) {
     res.embree_note = "Embree disabled (--no-embree)";
-  } else if (!float_mesh(s, &fmesh)) {
+  } else if (!float_mesh(s, &a.fmesh)) {
     res.embree_note = "scene has non-triangle primitives: no Embree comparison";
   } else {
-    device = std::make_unique<EmbreeDevice>("threads=1");
-    rtcSetDeviceMemoryMonitorFunction(device->get(), embree_monitor, nullptr);
+    a.device = std::make_unique<EmbreeDevice>("threads=1");
+    rtcSetDeviceMemoryMonitorFunction(a.device->get(), embree_monitor, nullptr);
   }
 #else
   res.embree_note = "built without Embree";
 #endif
   std::fprintf(stderr, "[%s] building (%d runs each)...\n", s.name.c_str(), build_reps);
   for (int k = 0; k < build_reps; ++k) {
-    bvh.reset();
+    a.bvh.reset();
     auto t0 = Clock::now();
-    bvh = std::make_unique<BVHAccel>(prims, 4);
+    a.bvh = std::make_unique<BVHAccel>(prims, 4);
     res.build.ours.runs.push_back(seconds_since(t0));
 #ifdef PT_HAVE_EMBREE
-    if (device) {
+    if (a.device) {
       for (int q = 0; q < 2; ++q) {
-        auto& slot = q == 0 ? emb_high : emb_medium;
+        auto& slot = q == 0 ? a.emb_high : a.emb_medium;
         slot.reset();
-        slot = std::make_unique<EmbreeScene>(*device, fmesh, q == 0 ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
+        slot = std::make_unique<EmbreeScene>(*a.device, a.fmesh, q == 0 ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
         long long before = g_embree_bytes;
         double t = slot->commit();
         double bytes = double(g_embree_bytes - before);
@@ -293,197 +297,241 @@ SceneResult run_scene(BenchScene& s, const Options& opt) {
     }
 #endif
   }
-  tree_stats(bvh->root(), &res.build);
+  tree_stats(a.bvh->root(), &res.build);
   res.build.ours_bytes = double(res.build.nodes) * sizeof(BVHNode) + double(prims.size()) * sizeof(Primitive*);
-
 #ifdef PT_HAVE_LADDER
-  std::vector<std::unique_ptr<ladder::Step>> steps;
-  if (opt.ladder) steps = ladder::make_steps(*bvh, &res.step_note);
-  for (const auto& step : steps) {
+  if (opt.ladder) a.steps = ladder::make_steps(*a.bvh, &res.step_note);
+  for (const auto& step : a.steps) {
     res.step_names.push_back(step->name());
     res.step_bytes.push_back(double(step->bytes()));
   }
 #endif
+  return a;
+}
 
-  // Rays.
-  const int img = opt.image;
+// A set of rays and the query asked of it.
+struct Query {
+  const char* rays;
+  const char* query;
+  const std::vector<Ray>* set;
+  bool closest;
+};
+
+// Ours, one thread, once: the answers (for the agreement checks; 0 marks an
+// any-hit hit) and the work counts.
+std::vector<double> our_answers(const Query& q, const BVHAccel& bvh, QueryResult& qr) {
+  const std::vector<Ray>& rays = *q.set;
+  std::vector<double> ours_t(rays.size(), kInf);
+  take_work_counters();
+  for (size_t i = 0; i < rays.size(); ++i) {
+    Ray r = rays[i];
+    if (q.closest) {
+      Intersection isect;
+      if (bvh.intersect(r, &isect)) ours_t[i] = isect.t;
+    } else if (bvh.has_intersection(r)) {
+      ours_t[i] = 0.0;
+    }
+    qr.hits += ours_t[i] != kInf;
+  }
+  WorkCounters wc = take_work_counters();
+  qr.tests_per_ray = double(wc.primitive_tests) / rays.size();
+  qr.nodes_per_ray = double(wc.node_visits) / rays.size();
+  return ours_t;
+}
+
+// Brute force on an evenly strided subsample (one thread, one run).
+void check_brute_force(const Query& q, const std::vector<Primitive*>& prims, const std::vector<double>& ours_t,
+                       const Options& opt, QueryResult& qr) {
+  const std::vector<Ray>& rays = *q.set;
+  const size_t n = rays.size();
+  size_t want = size_t(std::clamp(opt.brute_budget / double(prims.size()), 16.0, double(n)));
+  size_t stride = std::max<size_t>(1, n / want);
+  std::vector<size_t> idx;
+  for (size_t i = 0; i < n && idx.size() < want; i += stride) idx.push_back(i);
+  std::vector<double> brute_t(idx.size(), kInf);
+  auto t0 = Clock::now();
+  for (size_t k = 0; k < idx.size(); ++k) {
+    Ray r = rays[idx[k]];
+    if (q.closest) {
+      Intersection isect;
+      if (brute_closest(prims, r, &isect)) brute_t[k] = isect.t;
+    } else if (brute_any(prims, r)) {
+      brute_t[k] = 0.0;
+    }
+  }
+  qr.brute_seconds = seconds_since(t0);
+  qr.brute_n = idx.size();
+  for (size_t k = 0; k < idx.size(); ++k) {
+    double a = ours_t[idx[k]], b = brute_t[k];
+    bool same = (a == kInf) == (b == kInf) && (a == kInf || std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)));
+    qr.brute_mismatches += !same;
+  }
+}
+
+#ifdef PT_HAVE_EMBREE
+// Agreement with Embree (high quality), one pass.
+void check_embree(const Query& q, const EmbreeScene& emb, const std::vector<FRay>& frays,
+                  const std::vector<double>& ours_t, double diag, const Options& opt, QueryResult& qr) {
+  const std::vector<Ray>& rays = *q.set;
+  qr.have_embree = true;
+  int shown = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const FRay& f = frays[i];
+    if (q.closest) {
+      float te = emb.intersect(f.o, f.d, f.tnear, f.tfar);  // kMiss is +inf
+      double a = ours_t[i];
+      bool same = agree_to_float_precision(a, te, diag);
+      qr.embree_mismatches += !same;
+      if (!same && shown < opt.show_mismatches) {
+        ++shown;
+        std::cerr << "  mismatch: ray " << i << " " << rays[i] << ": ours t = " << a << ", Embree t = " << te << "\n";
+      }
+    } else {
+      bool he = emb.occluded(f.o, f.d, f.tnear, f.tfar);
+      bool same = he == (ours_t[i] != kInf);
+      qr.embree_mismatches += !same;
+      if (!same && shown < opt.show_mismatches) {
+        ++shown;
+        std::cerr << "  mismatch: ray " << i << " " << rays[i] << ": ours " << (he ? "misses" : "hits") << ", Embree "
+                  << (he ? "hits" : "misses") << "\n";
+      }
+    }
+  }
+}
+#endif
+
+#ifdef PT_HAVE_LADDER
+// Agreement of every step with ours: the same closest t to the bit (the
+// steps test the same triangles with the same arithmetic), the same any-hit
+// answers.
+void check_steps(const Query& q, const std::vector<std::unique_ptr<ladder::Step>>& steps,
+                 const std::vector<double>& ours_t, double diag, QueryResult& qr) {
+  const std::vector<Ray>& rays = *q.set;
+  qr.steps.resize(steps.size());
+  qr.step_mismatches.assign(steps.size(), 0);
+  for (size_t k = 0; k < steps.size(); ++k) {
+    const bool exact = steps[k]->exact();
+    for (size_t i = 0; i < rays.size(); ++i) {
+      bool same;
+      if (!q.closest) {
+        same = steps[k]->any(rays[i]) == (ours_t[i] != kInf);
+      } else {
+        double t = steps[k]->closest(rays[i]);
+        same = exact ? t == ours_t[i] : agree_to_float_precision(ours_t[i], t, diag);
+      }
+      qr.step_mismatches[k] += !same;
+    }
+  }
+}
+#endif
+
+// Timed runs, interleaved so that a burst of machine load hits every
+// implementation alike.
+void time_query(const Query& q, const Accelerators& a, [[maybe_unused]] const std::vector<FRay>& frays,
+                const Options& opt, QueryResult& qr) {
+  const std::vector<Ray>& rays = *q.set;
+  const size_t n = rays.size();
+  const size_t nt = opt.threads.size();
+  qr.ours.by_threads.resize(nt);
+  qr.embree_high.by_threads.resize(nt);
+  qr.embree_medium.by_threads.resize(nt);
+  auto ours_closest = [&](size_t i) -> size_t {
+    Ray r = rays[i];
+    Intersection isect;
+    return a.bvh->intersect(r, &isect);
+  };
+  auto ours_any = [&](size_t i) -> size_t { return a.bvh->has_intersection(rays[i]); };
+  for (int rep = 0; rep < opt.reps; ++rep) {
+    for (size_t ti = 0; ti < nt; ++ti) {
+      int T = opt.threads[ti];
+      size_t count = 0;
+      double t = q.closest ? run_parallel(T, n, ours_closest, &count) : run_parallel(T, n, ours_any, &count);
+      qr.ours.by_threads[ti].runs.push_back(t);
+      qr.count_mismatch_runs += count != qr.hits;
+#ifdef PT_HAVE_LADDER
+      if (ti == 0) {  // the steps on the first thread count only
+        for (size_t k = 0; k < a.steps.size(); ++k) {
+          const ladder::Step& step = *a.steps[k];
+          auto closest = [&](size_t i) -> size_t { return step.closest(rays[i]) != kInf; };
+          auto any = [&](size_t i) -> size_t { return step.any(rays[i]); };
+          size_t step_count = 0;
+          double ts = q.closest ? run_parallel(T, n, closest, &step_count) : run_parallel(T, n, any, &step_count);
+          qr.steps[k].runs.push_back(ts);
+        }
+      }
+#endif
+#ifdef PT_HAVE_EMBREE
+      if (a.emb_high) {
+        for (int quality = 0; quality < 2; ++quality) {
+          const EmbreeScene& es = quality == 0 ? *a.emb_high : *a.emb_medium;
+          auto e_closest = [&](size_t i) -> size_t {
+            const FRay& f = frays[i];
+            return es.intersect(f.o, f.d, f.tnear, f.tfar) != EmbreeScene::kMiss;
+          };
+          auto e_any = [&](size_t i) -> size_t {
+            const FRay& f = frays[i];
+            return es.occluded(f.o, f.d, f.tnear, f.tfar);
+          };
+          size_t ecount = 0;
+          double te = q.closest ? run_parallel(T, n, e_closest, &ecount) : run_parallel(T, n, e_any, &ecount);
+          (quality == 0 ? qr.embree_high : qr.embree_medium).by_threads[ti].runs.push_back(te);
+        }
+      }
+#endif
+    }
+  }
+}
+
+// One query: ours answered and counted, checked against brute force (and
+// Embree and the ladder's steps where built), then timed.
+QueryResult run_query(const BenchScene& s, const Query& q, const std::vector<Primitive*>& prims, const Accelerators& a,
+                      const Options& opt, [[maybe_unused]] double diag) {
+  QueryResult qr;
+  qr.rays = q.rays;
+  qr.query = q.query;
+  qr.n = q.set->size();
+  std::fprintf(stderr, "[%s] %s rays, %s hit: checking...\n", s.name.c_str(), q.rays, q.query);
+  const std::vector<double> ours_t = our_answers(q, *a.bvh, qr);
+  check_brute_force(q, prims, ours_t, opt, qr);
+  std::vector<FRay> frays;
+#ifdef PT_HAVE_EMBREE
+  if (a.emb_high) {
+    frays = to_float(*q.set);
+    check_embree(q, *a.emb_high, frays, ours_t, diag, opt, qr);
+  }
+#endif
+#ifdef PT_HAVE_LADDER
+  check_steps(q, a.steps, ours_t, diag, qr);
+#endif
+  std::fprintf(stderr, "[%s] %s rays, %s hit: timing (%d runs)...\n", s.name.c_str(), q.rays, q.query, opt.reps);
+  time_query(q, a, frays, opt, qr);
+  return qr;
+}
+
+SceneResult run_scene(BenchScene& s, const Options& opt) {
+  SceneResult res;
+  res.name = s.name;
+  res.description = s.description;
+  res.triangles = s.triangle_count();
+  res.primitives = s.scene.primitives.size();
+  const std::vector<Primitive*> prims = s.prims();
+  const BBox bounds = s.bounds();
+  res.diag = glm::length(bounds.extent());
+  const Accelerators a = build_all(s, prims, opt, res);
+
   Camera cam = s.scene.camera;
   cam.set_aspect(1.0);
-  std::vector<Ray> cam_rays = camera_rays(cam, img, img);
-  std::vector<Ray> rnd_rays = random_rays(bounds, opt.random, opt.seed, false);
-  std::vector<Ray> shadow_rays = random_rays(bounds, opt.random, opt.seed, true);
-  struct Q {
-    const char* rays;
-    const char* query;
-    const std::vector<Ray>* set;
-    bool closest;
-  };
-  const Q qs[] = {{"camera", "closest", &cam_rays, true},
-                  {"camera", "any", &cam_rays, false},
-                  {"random", "closest", &rnd_rays, true},
-                  {"shadow", "any", &shadow_rays, false}};
-
-  for (const Q& q : qs) {
-    if (!opt.queries.empty() &&
-        std::find(opt.queries.begin(), opt.queries.end(), std::string(q.rays) + "-" + q.query) == opt.queries.end())
-      continue;
-    const std::vector<Ray>& rays = *q.set;
-    const size_t n = rays.size();
-    QueryResult qr;
-    qr.rays = q.rays;
-    qr.query = q.query;
-    qr.n = n;
-    std::fprintf(stderr, "[%s] %s rays, %s hit: checking...\n", s.name.c_str(), q.rays, q.query);
-
-    // Ours, one thread, once: answers (for the agreement checks) and work counts.
-    std::vector<double> ours_t(n, kInf);
-    take_work_counters();
-    for (size_t i = 0; i < n; ++i) {
-      Ray r = rays[i];
-      if (q.closest) {
-        Intersection isect;
-        if (bvh->intersect(r, &isect)) ours_t[i] = isect.t;
-      } else if (bvh->has_intersection(r)) {
-        ours_t[i] = 0.0;  // hit marker
-      }
-      qr.hits += ours_t[i] != kInf;
-    }
-    WorkCounters wc = take_work_counters();
-    qr.tests_per_ray = double(wc.primitive_tests) / n;
-    qr.nodes_per_ray = double(wc.node_visits) / n;
-
-    // Brute force on an evenly strided subsample (one thread, one run).
-    {
-      size_t want = size_t(std::clamp(opt.brute_budget / double(prims.size()), 16.0, double(n)));
-      size_t stride = std::max<size_t>(1, n / want);
-      std::vector<size_t> idx;
-      for (size_t i = 0; i < n && idx.size() < want; i += stride) idx.push_back(i);
-      std::vector<double> brute_t(idx.size(), kInf);
-      auto t0 = Clock::now();
-      for (size_t k = 0; k < idx.size(); ++k) {
-        Ray r = rays[idx[k]];
-        if (q.closest) {
-          Intersection isect;
-          if (brute_closest(prims, r, &isect)) brute_t[k] = isect.t;
-        } else if (brute_any(prims, r)) {
-          brute_t[k] = 0.0;
-        }
-      }
-      qr.brute_seconds = seconds_since(t0);
-      qr.brute_n = idx.size();
-      for (size_t k = 0; k < idx.size(); ++k) {
-        double a = ours_t[idx[k]], b = brute_t[k];
-        bool same = (a == kInf) == (b == kInf) && (a == kInf || std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)));
-        qr.brute_mismatches += !same;
-      }
-    }
-
-#ifdef PT_HAVE_EMBREE
-    std::vector<FRay> frays;
-    if (emb_high) {
-      qr.have_embree = true;
-      frays = to_float(rays);
-      // Agreement with Embree (high quality), one pass.
-      int shown = 0;
-      for (size_t i = 0; i < n; ++i) {
-        const FRay& f = frays[i];
-        if (q.closest) {
-          float te = emb_high->intersect(f.o, f.d, f.tnear, f.tfar);  // kMiss is +inf
-          double a = ours_t[i];
-          bool same = agree_to_float_precision(a, te, res.diag);
-          qr.embree_mismatches += !same;
-          if (!same && shown < opt.show_mismatches) {
-            ++shown;
-            std::cerr << "  mismatch: ray " << i << " " << rays[i] << ": ours t = " << a << ", Embree t = " << te << "\n";
-          }
-        } else {
-          bool he = emb_high->occluded(f.o, f.d, f.tnear, f.tfar);
-          bool same = he == (ours_t[i] != kInf);
-          qr.embree_mismatches += !same;
-          if (!same && shown < opt.show_mismatches) {
-            ++shown;
-            std::cerr << "  mismatch: ray " << i << " " << rays[i] << ": ours " << (he ? "misses" : "hits")
-                      << ", Embree " << (he ? "hits" : "misses") << "\n";
-          }
-        }
-      }
-    }
-#endif
-
-#ifdef PT_HAVE_LADDER
-    // Agreement of every step with ours: the same closest t to the bit (the
-    // steps test the same triangles with the same arithmetic), the same
-    // any-hit answers.
-    qr.steps.resize(steps.size());
-    qr.step_mismatches.assign(steps.size(), 0);
-    for (size_t k = 0; k < steps.size(); ++k) {
-      const bool exact = steps[k]->exact();
-      for (size_t i = 0; i < n; ++i) {
-        bool same;
-        if (!q.closest) {
-          same = steps[k]->any(rays[i]) == (ours_t[i] != kInf);
-        } else {
-          double t = steps[k]->closest(rays[i]);
-          same = exact ? t == ours_t[i] : agree_to_float_precision(ours_t[i], t, res.diag);
-        }
-        qr.step_mismatches[k] += !same;
-      }
-    }
-#endif
-
-    // Timed runs, interleaved so that a burst of machine load hits every
-    // implementation alike.
-    std::fprintf(stderr, "[%s] %s rays, %s hit: timing (%d runs)...\n", s.name.c_str(), q.rays, q.query, opt.reps);
-    const size_t nt = opt.threads.size();
-    qr.ours.by_threads.resize(nt);
-    qr.embree_high.by_threads.resize(nt);
-    qr.embree_medium.by_threads.resize(nt);
-    auto ours_closest = [&](size_t i) -> size_t {
-      Ray r = rays[i];
-      Intersection isect;
-      return bvh->intersect(r, &isect);
-    };
-    auto ours_any = [&](size_t i) -> size_t { return bvh->has_intersection(rays[i]); };
-    for (int rep = 0; rep < opt.reps; ++rep) {
-      for (size_t ti = 0; ti < nt; ++ti) {
-        int T = opt.threads[ti];
-        size_t count = 0;
-        double t = q.closest ? run_parallel(T, n, ours_closest, &count) : run_parallel(T, n, ours_any, &count);
-        qr.ours.by_threads[ti].runs.push_back(t);
-        qr.count_mismatch_runs += count != qr.hits;
-#ifdef PT_HAVE_LADDER
-        if (ti == 0) {  // the steps on the first thread count only
-          for (size_t k = 0; k < steps.size(); ++k) {
-            const ladder::Step& step = *steps[k];
-            auto closest = [&](size_t i) -> size_t { return step.closest(rays[i]) != kInf; };
-            auto any = [&](size_t i) -> size_t { return step.any(rays[i]); };
-            size_t step_count = 0;
-            double ts = q.closest ? run_parallel(T, n, closest, &step_count) : run_parallel(T, n, any, &step_count);
-            qr.steps[k].runs.push_back(ts);
-          }
-        }
-#endif
-#ifdef PT_HAVE_EMBREE
-        if (emb_high) {
-          for (int quality = 0; quality < 2; ++quality) {
-            const EmbreeScene& es = quality == 0 ? *emb_high : *emb_medium;
-            auto e_closest = [&](size_t i) -> size_t {
-              const FRay& f = frays[i];
-              return es.intersect(f.o, f.d, f.tnear, f.tfar) != EmbreeScene::kMiss;
-            };
-            auto e_any = [&](size_t i) -> size_t {
-              const FRay& f = frays[i];
-              return es.occluded(f.o, f.d, f.tnear, f.tfar);
-            };
-            size_t ecount = 0;
-            double te = q.closest ? run_parallel(T, n, e_closest, &ecount) : run_parallel(T, n, e_any, &ecount);
-            (quality == 0 ? qr.embree_high : qr.embree_medium).by_threads[ti].runs.push_back(te);
-          }
-        }
-#endif
-      }
-    }
-    res.queries.push_back(std::move(qr));
+  const std::vector<Ray> cam_rays = camera_rays(cam, opt.image, opt.image);
+  const std::vector<Ray> rnd_rays = random_rays(bounds, opt.random, opt.seed, false);
+  const std::vector<Ray> shadow_rays = random_rays(bounds, opt.random, opt.seed, true);
+  const Query queries[] = {{"camera", "closest", &cam_rays, true},
+                           {"camera", "any", &cam_rays, false},
+                           {"random", "closest", &rnd_rays, true},
+                           {"shadow", "any", &shadow_rays, false}};
+  for (const Query& q : queries) {
+    const std::string name = std::string(q.rays) + "-" + q.query;
+    if (opt.queries.empty() || std::find(opt.queries.begin(), opt.queries.end(), name) != opt.queries.end())
+      res.queries.push_back(run_query(s, q, prims, a, opt, res.diag));
   }
   return res;
 }

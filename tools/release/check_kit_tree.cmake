@@ -1,5 +1,5 @@
 # The tree a submission is built in holds no test: pt-grade submission copies
-# these items of the grading kit into it (autograder/submission.cpp), and the
+# these items of the grading kit into it (autograder/submission/submission.cpp), and the
 # submission's compiler may read all of them (an assembler .incbin), so
 # pt-release-check must find in them no line of the solution's source and no
 # hidden test's name. The graded tests live in the kit's verifiers/, outside.

@@ -52,7 +52,7 @@ function(strip_debug rel)
 endfunction()
 
 # write_release_facts(): prebuilt/release.json, what `pt-grade check-submission`
-# (autograder/check_submission.h) compares a student's tree with: the task
+# (autograder/submission/check_submission.h) compares a student's tree with: the task
 # files' names, each part's hidden tests (how many, how many points: never
 # their names) and the SHA-256 of every file the grader has its own copy of
 # (the framework, the tests, the build), so that an edit is named.
@@ -224,10 +224,10 @@ if(MODE STREQUAL "student")
   copy_tree(tests/viewer EXCLUDE "/node_modules/")
   # The grader, for `pt-grade run` on the student's own machine; not the
   # instructor's threat model, kit or Gradescope packaging.
-  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope|prairielearn)/" "^autograder/README\\.md$"
+  copy_tree(autograder EXCLUDE "^autograder/(kit|gradescope|prairielearn|hostile)/" "^autograder/README\\.md$"
             "^autograder/(build_grader_image|grading_args)\\.sh$"
-            "^autograder/tests/(test_gradescope|test_prairielearn|test_report|test_leaderboard)\\.sh$"
-            "^autograder/tests/check_leaderboard\\.cmake$" "^autograder/tests/browser/")
+            "^autograder/report/(test_report|test_leaderboard)\\.sh$"
+            "^autograder/report/check_leaderboard\\.cmake$" "^autograder/report/browser/")
   # The benchmark, without the ladder of traversals from the reference to Embree.
   copy_tree(tools/bench EXCLUDE "/ladder\\.(h|cpp)$")
   # The generator of the library's procedural scene (the library tests render
@@ -256,7 +256,7 @@ elseif(MODE STREQUAL "kit")
     copy_file(${S}/skeleton/${h} include/${h})
   endforeach()
   copy_file(${S}/skeleton/app/main.cpp src/main.cpp)
-  copy_file(${S}/autograder/header_probe.cpp src/header_probe.cpp)
+  copy_file(${S}/autograder/compile/header_probe.cpp src/header_probe.cpp)
   copy_tree(tasks)
   copy_tree(scenes EXCLUDE ${scene_excludes})
   copy_tree(handouts)  # the report sends each failure to its section

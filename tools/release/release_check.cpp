@@ -4,7 +4,7 @@
 //
 // Fails (exit 1, listing each finding) when
 //  * a file or folder of the release is one the release must leave out
-//    (reference/, tests/mutants/, tests/hostile/, tests/partN/hidden/,
+//    (reference/, tests/mutants/, autograder/hostile/, tests/partN/hidden/,
 //    tests/support/compiled/, tools/bench/ladder.*);
 //  * any file of it (text, or the bytes of a binary: the prebuilt libraries
 //    included) holds a non-trivial line of SOURCE/reference/*.cpp: at least 24
@@ -37,8 +37,8 @@
 #include <string>
 #include <vector>
 
-#include "command.h"
-#include "manifest.h"
+#include "process/command.h"
+#include "run/manifest.h"
 
 namespace {
 
@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
     const std::string rel = fs::relative(e.path(), release).generic_string();
     // A folder named reference/ anywhere holds the solution, except the
     // scene library's stored reference images, which the release must carry.
-    static const std::vector<std::string> banned = {"/reference/", "tests/mutants", "tests/hostile", "/hidden/",
+    static const std::vector<std::string> banned = {"/reference/", "tests/mutants", "autograder/hostile", "/hidden/",
                                                     "/hidden", "tests/support/compiled", "ladder."};
     const std::string anchored = "/" + rel + (e.is_directory() ? "/" : "");
     const bool scene_images = rel.rfind("scenes/reference", 0) == 0 && !e.is_directory() &&

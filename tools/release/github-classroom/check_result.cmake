@@ -1,5 +1,5 @@
 # Checks a decoded GitHub Classroom result (pt-grade check-submission
-# --format github-classroom, autograder/classroom_result.h) field by field
+# --format github-classroom, autograder/report/classroom_result.h) field by field
 # against what the release itself says: its test manifest (each task's visible
 # tests and points) and prebuilt/release.json (each part's hidden tests).
 #   cmake -DRESULT=<json> -DMANIFEST=<build/tests/graded_manifest.json>

@@ -1,0 +1,232 @@
+#include "process/launcher.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace pt::grade {
+
+Fd& Fd::operator=(Fd&& other) noexcept {
+  if (this != &other) {
+    reset();
+    fd_ = other.release();
+  }
+  return *this;
+}
+
+int Fd::release() {
+  const int fd = fd_;
+  fd_ = -1;
+  return fd;
+}
+
+void Fd::reset() {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+}
+
+bool Pipe::open() {
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) return false;
+  read = Fd(fds[0]);
+  write = Fd(fds[1]);
+  return true;
+}
+
+Child::Child(const LaunchOptions& options, const std::function<void()>& body) {
+  std::fflush(nullptr);  // what this process buffered must not come out twice
+  const pid_t parent = ::getpid();
+  // clone() with namespace flags: fork() cannot create them, and the child
+  // must be the first process of its PID namespace.
+  pid_ = options.namespaces == 0
+             ? ::fork()
+             : static_cast<pid_t>(::syscall(SYS_clone, SIGCHLD | options.namespaces, nullptr, nullptr, nullptr, 0));
+  if (pid_ == 0) {
+    if (options.parent_death_signal != 0) {
+      ::prctl(PR_SET_PDEATHSIG, options.parent_death_signal);
+      // The parent died before the line above: the signal would never come.
+      if (options.namespaces == 0 && ::getppid() != parent) ::_exit(128 + options.parent_death_signal);
+    }
+    body();
+    ::_exit(127);
+  }
+  if (pid_ < 0) error_ = errno;
+  for (int fd : options.child_ends)
+    if (fd >= 0) ::close(fd);
+}
+
+Child::~Child() {
+  if (!started() || reaped_) return;
+  kill(SIGKILL);
+  wait();
+}
+
+bool Child::exited() {
+  if (reaped_) return true;
+  const pid_t r = ::waitpid(pid_, &status_, WNOHANG);
+  reaped_ = r == pid_ || (r < 0 && errno == ECHILD);
+  return reaped_;
+}
+
+namespace {
+
+// One read from a descriptor poll() found ready; false at its end.
+bool read_some(const Stream& s) {
+  char buf[65536];
+  const ssize_t n = ::read(s.fd, buf, sizeof buf);
+  if (n > 0) {
+    if (s.sink) s.sink(buf, static_cast<size_t>(n));
+    return true;
+  }
+  return n < 0 && (errno == EINTR || errno == EAGAIN);
+}
+
+}  // namespace
+
+bool Child::watch(std::vector<Stream>& streams, int until, const std::function<Clock::time_point()>& deadline,
+                  const std::function<void()>& tick) {
+  std::vector<pollfd> fds(streams.size());
+  for (size_t i = 0; i < streams.size(); ++i) fds[i] = {streams[i].fd, POLLIN, 0};
+  const auto period = std::chrono::milliseconds(250);
+  auto next_tick = Clock::now();
+  for (;;) {
+    if (until >= 0 ? fds[static_cast<size_t>(until)].fd < 0 : exited()) return true;
+    const auto now = Clock::now();
+    const auto end = deadline ? deadline() : Clock::time_point::max();
+    if (now >= end) return false;
+    if (tick && now >= next_tick) {
+      tick();
+      next_tick = now + period;
+    }
+    // Without a stream to end the watch, the child's exit is looked for
+    // every 10 ms; otherwise a stream's end wakes the poll.
+    auto wait = std::min<Clock::duration>(end - now, until >= 0 ? std::chrono::milliseconds(200)
+                                                                : std::chrono::milliseconds(10));
+    if (tick) wait = std::min<Clock::duration>(wait, next_tick - now);
+    const int ms = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(wait).count()) + 1;
+    if (::poll(fds.data(), fds.size(), ms) < 0 && errno != EINTR) return true;
+    for (size_t i = 0; i < streams.size(); ++i)
+      if (fds[i].fd >= 0 && fds[i].revents != 0 && !read_some(streams[i])) fds[i].fd = -1;
+  }
+}
+
+void Child::kill(int signal) const {
+  if (started()) ::kill(pid_, signal);
+}
+
+void Child::kill_group(int signal) const {
+  if (started()) ::kill(-pid_, signal);
+}
+
+int Child::wait() {
+  while (started() && !reaped_) {
+    const pid_t r = ::waitpid(pid_, &status_, 0);
+    reaped_ = r == pid_ || (r < 0 && errno != EINTR);
+  }
+  return status_;
+}
+
+int Child::wait_reaping_others() {
+  while (started() && !reaped_) {
+    int status = 0;
+    const pid_t r = ::waitpid(-1, &status, 0);
+    if (r == pid_) status_ = status;
+    reaped_ = r == pid_ || (r < 0 && errno != EINTR);
+  }
+  return status_;
+}
+
+void drain(const Stream& stream) {
+  if (stream.fd < 0) return;
+  ::fcntl(stream.fd, F_SETFL, O_NONBLOCK);
+  for (;;) {
+    char buf[65536];
+    const ssize_t n = ::read(stream.fd, buf, sizeof buf);
+    if (n > 0 && stream.sink) stream.sink(buf, static_cast<size_t>(n));
+    if (n == 0 || (n < 0 && errno != EINTR)) return;
+  }
+}
+
+int shell_status(int wait_status) {
+  return WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : 128 + WTERMSIG(wait_status);
+}
+
+std::set<pid_t> children_of(pid_t pid) {
+  std::set<pid_t> found;
+  std::error_code ec;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", ec)) {
+    std::ifstream in(task.path() / "children");
+    for (pid_t child; in >> child;) found.insert(child);
+  }
+  return found;
+}
+
+void kill_namespace() {
+  // As PID 1, kill(-1) reaches every other process of the namespace at once
+  // (and /proc may not show them by their pids here).
+  ::kill(-1, SIGKILL);
+  while (::waitpid(-1, nullptr, 0) > 0 || errno == EINTR) {
+  }
+}
+
+void kill_descendants(const std::set<pid_t>& spare) {
+  auto tree = [&] {
+    std::set<pid_t> found;
+    std::vector<pid_t> todo;
+    for (pid_t child : children_of(::getpid()))
+      if (!spare.count(child)) todo.push_back(child);
+    while (!todo.empty()) {
+      const pid_t pid = todo.back();
+      todo.pop_back();
+      if (!found.insert(pid).second) continue;
+      for (pid_t child : children_of(pid)) todo.push_back(child);
+    }
+    return found;
+  };
+  // Stop the whole tree first: a stopped process cannot fork, so a fork bomb
+  // cannot refill what is killed. Walk again until no new process shows up.
+  auto stop_and_kill = [&] {
+    std::set<pid_t> stopped;
+    for (int round = 0; round < 1000; ++round) {
+      bool grew = false;
+      for (pid_t pid : tree())
+        if (stopped.insert(pid).second) {
+          ::kill(pid, SIGSTOP);
+          grew = true;
+        }
+      if (!grew) break;
+    }
+    for (pid_t pid : stopped) ::kill(pid, SIGKILL);
+  };
+  stop_and_kill();
+  // They die; the orphans among them are handed to this subreaper to reap.
+  // The kernel's lists of children may miss a process while others fork and
+  // exit around it (proc(5): "children" is not reliable then), so a walk can
+  // miss one: a child still alive when nothing is left to reap is killed
+  // again, never waited for while it runs (hostile-fallback:fork_bomb once
+  // held the grader in waitpid on a missed process until ctest's limit).
+  for (int round = 0; round < 100000; ++round) {
+    std::set<pid_t> left = children_of(::getpid());
+    for (pid_t pid : spare) left.erase(pid);
+    if (left.empty()) break;
+    bool reaped = false;
+    for (pid_t pid : left) reaped = ::waitpid(pid, nullptr, WNOHANG) > 0 || reaped;
+    if (!reaped) {
+      stop_and_kill();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+}
+
+}  // namespace pt::grade

@@ -1,0 +1,552 @@
+#include "sandbox/sandbox.h"
+
+#include <fcntl.h>
+#include <linux/openat2.h>
+#include <pwd.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "process/launcher.h"
+#include "sandbox/confine.h"
+#include "sandbox/landlock.h"
+#include "sandbox/seccomp_filter.h"
+
+namespace pt::grade {
+
+struct Sandbox::Plan : confine::Plan {};
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The head and the tail of whatever the run prints: a flood costs the grader
+// CPU time (bounded by the time limits), never disk or memory.
+class OutputKeeper {
+ public:
+  OutputKeeper(size_t head, size_t tail) : head_max_(head), tail_max_(tail) {}
+  void add(const char* data, size_t n) {
+    total_ += n;
+    const size_t to_head = std::min(n, head_max_ - head_.size());
+    head_.append(data, to_head);
+    data += to_head;
+    n -= to_head;
+    if (n == 0) return;
+    tail_.append(data, n);
+    if (tail_.size() > 2 * tail_max_) tail_.erase(0, tail_.size() - tail_max_);
+  }
+  uint64_t total() const { return total_; }
+  std::string text() const {
+    const std::string tail = tail_.size() > tail_max_ ? tail_.substr(tail_.size() - tail_max_) : tail_;
+    const uint64_t dropped = total_ - head_.size() - tail.size();
+    if (dropped == 0) return head_ + tail;
+    return head_ + "\n[... pt-grade kept the first " + std::to_string(head_max_ >> 10) + " KiB and the last " +
+           std::to_string(tail_max_ >> 10) + " KiB: " + std::to_string(dropped) + " bytes not kept ...]\n" + tail;
+  }
+
+ private:
+  size_t head_max_, tail_max_;
+  std::string head_, tail_;
+  uint64_t total_ = 0;
+};
+
+// The warden of the run in progress, for the interrupt handler: a grader
+// stopped with Ctrl-C or SIGTERM takes the run with it.
+volatile sig_atomic_t g_warden = 0;
+
+void kill_run_and_die(int sig) {
+  if (g_warden > 0) ::kill(g_warden, SIGKILL);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+void install_interrupt_handlers() {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP})
+    if (::signal(sig, kill_run_and_die) == SIG_IGN) ::signal(sig, SIG_IGN);  // e.g. under nohup
+}
+
+struct Failure {
+  std::string step, what;
+  int err = 0;
+};
+
+struct SpawnResult {
+  RunOutcome outcome;
+  std::vector<Failure> failures;  // steps that failed (a probe carries on past optional ones)
+  int clone_errno = 0;            // clone() itself failed
+};
+
+Exit not_started(std::string why) {
+  Exit e;
+  e.error = std::move(why);
+  return e;
+}
+
+// The pipes of one run: the warden's status lines, the run's output and,
+// with a key, its verdict channel and the key it reads.
+struct RunPipes {
+  Pipe status, output, verdicts, key;
+
+  // "" or what failed.
+  std::string open(const std::string& key_text) {
+    if (!status.open() || !output.open() || (!key_text.empty() && (!verdicts.open() || !key.open())))
+      return std::string("pipe: ") + std::strerror(errno);
+    if (!key_text.empty()) {
+      [[maybe_unused]] auto n = ::write(key.write.get(), key_text.data(), key_text.size());
+      key.write.reset();  // the test main reads the key, then end of file
+    }
+    return "";
+  }
+};
+
+// What the warden is given (confine.h), with the strings it points into.
+struct WardenArgs {
+  std::vector<std::string> argv, env;
+  confine::ChildArgs child;
+
+  WardenArgs(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, const RunPipes& pipes,
+             int binary, bool probe)
+      : env{"PATH=/usr/bin:/bin", "HOME=" + workdir, "TMPDIR=" + workdir, "LANG=C.UTF-8"} {
+    argv.push_back(req.binary);
+    argv.insert(argv.end(), req.args.begin(), req.args.end());
+    confine::ChildArgs& a = child;
+    a.plan = &plan;
+    a.probe = probe;
+    a.status = pipes.status.write.get();
+    a.output = pipes.output.write.get();
+    a.verdicts = pipes.verdicts.write.get();
+    a.key = pipes.key.read.get();
+    if (req.key.empty()) {  // a worker: its link where a verdict channel would be
+      a.verdicts = req.link_write;
+      a.key = req.link_read;
+    } else {
+      a.link_read = req.link_read;
+      a.link_write = req.link_write;
+    }
+    a.binary = binary;
+    a.binary_path = req.binary;
+    a.workdir = workdir;
+    a.output_dir = req.output_dir;
+    for (auto& s : argv) a.argv.push_back(s.data());
+    a.argv.push_back(nullptr);
+    for (auto& s : env) a.envp.push_back(s.data());
+    a.envp.push_back(nullptr);
+    a.outer_uid = ::geteuid();
+    a.outer_gid = ::getegid();
+  }
+};
+
+unsigned long namespace_flags(const confine::Plan& plan) {
+  unsigned long flags = 0;
+  if (plan.user_ns) flags |= CLONE_NEWUSER;
+  if (plan.pid_ns) flags |= CLONE_NEWPID;
+  if (plan.mount_ns) flags |= CLONE_NEWNS;
+  if (plan.ipc_ns) flags |= CLONE_NEWIPC;
+  return flags;
+}
+
+// The warden's status lines (confine.h): the steps that failed, and the
+// run's wait status when it said one.
+struct WardenReport {
+  std::vector<Failure> failures;
+  bool reported = false;
+  int wait_status = 0;
+};
+
+WardenReport read_status(const std::string& text) {
+  WardenReport w;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    if (kind == "exit") {
+      w.reported = static_cast<bool>(words >> w.wait_status);
+    } else if (kind == "fail") {
+      Failure f;
+      words >> f.step >> f.err;
+      std::getline(words >> std::ws, f.what);
+      w.failures.push_back(f);
+    }
+  }
+  return w;
+}
+
+// How the run ended: its deadline, a step of the sandbox that failed, a
+// warden killed before it could say, or the exit status it said.
+Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int warden_status) {
+  Exit e;
+  if (timed_out) {
+    e.how = Exit::How::TimedOut;
+    e.limit = timed_out->limit_seconds;
+  } else if (!probe && !w.failures.empty()) {
+    const Failure& f = w.failures.front();
+    e = not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
+  } else if (!w.reported) {
+    e.how = Exit::How::Lost;
+    e.error = "the sandbox's warden was killed" +
+              (WIFSIGNALED(warden_status) ? " by signal " + std::to_string(WTERMSIG(warden_status)) : "") +
+              " before it could say how the run ended";
+  } else if (WIFSIGNALED(w.wait_status)) {
+    e.how = Exit::How::Signaled;
+    e.code = WTERMSIG(w.wait_status);
+  } else {
+    e.how = Exit::How::Exited;
+    e.code = WEXITSTATUS(w.wait_status);
+  }
+  return e;
+}
+
+// One run: the warden started in the run's namespaces (confine.h), its
+// output and verdicts read until it reports or the observer's deadline
+// passes, then every process of the run dead before this returns.
+SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
+                  bool probe, Fd& link_read, Fd& link_write) {
+  SpawnResult r;
+  RunPipes pipes;
+  if (const std::string error = pipes.open(req.key); !error.empty()) {
+    r.outcome.exit = not_started(error);
+    return r;
+  }
+  Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
+  if (binary.get() < 0) {
+    r.outcome.exit = not_started(req.binary + ": " + std::strerror(errno));
+    return r;
+  }
+  const WardenArgs args(plan, workdir, req, pipes, binary.get(), probe);
+  // Children the caller already had are not the run's: never killed.
+  const std::set<pid_t> before = children_of(::getpid());
+  const auto start = Clock::now();
+  LaunchOptions launch;
+  launch.namespaces = namespace_flags(plan);
+  // The child has its own: the peer sees the end of the link when this run ends.
+  launch.child_ends = {pipes.status.write.release(), pipes.output.write.release(), pipes.verdicts.write.release(),
+                       pipes.key.read.release(),     binary.release(),             link_read.release(),
+                       link_write.release()};
+  Child warden(launch, [&args] { confine::warden_main(args.child); });
+  if (!warden.started()) {
+    r.clone_errno = warden.start_error();
+    r.outcome.exit = not_started(std::string("clone: ") + std::strerror(warden.start_error()));
+    return r;
+  }
+  g_warden = warden.pid();
+
+  const SandboxLimits& limits = plan.limits;
+  OutputKeeper kept(limits.output_head, limits.output_tail);
+  std::string status_text;
+  std::vector<Stream> streams{
+      {pipes.output.read.get(), [&](const char* d, size_t n) { kept.add(d, n); }},
+      {pipes.verdicts.read.get(), [&](const char* d, size_t n) { observer.on_channel(std::string_view(d, n)); }},
+      {pipes.status.read.get(), [&](const char* d, size_t n) {
+         if (status_text.size() < 65536) status_text.append(d, n);
+       }}};
+  Deadline deadline{};
+  const bool ended = warden.watch(streams, 2, [&] { return (deadline = observer.deadline()).when; });
+  warden.kill(SIGKILL);  // a timeout; otherwise it has already gone
+  const int warden_status = warden.wait();
+  g_warden = 0;
+  // Without a PID namespace, whatever the killed warden left is handed here.
+  if (!plan.pid_ns) kill_descendants(before);
+  for (const Stream& s : streams) drain(s);
+
+  const WardenReport report = read_status(status_text);
+  r.failures = report.failures;
+  r.outcome.exit = exit_of(report, ended ? nullptr : &deadline, probe, warden_status);
+  r.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.outcome.output = kept.text();
+  r.outcome.output_bytes = kept.total();
+  return r;
+}
+
+class FixedDeadline : public RunObserver {
+ public:
+  explicit FixedDeadline(double seconds)
+      : when_(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds))),
+        seconds_(seconds) {}
+  void on_channel(std::string_view) override {}
+  Deadline deadline() const override { return {when_, seconds_}; }
+
+ private:
+  Clock::time_point when_;
+  double seconds_;
+};
+
+std::string mebibytes(uint64_t bytes) {
+  std::ostringstream os;
+  if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0)
+    os << (bytes >> 30) << " GiB";
+  else
+    os << (bytes >> 20) << " MiB";
+  return os.str();
+}
+
+// Hands a folder the grader made to the sandbox's user. The path is opened
+// without following any link (openat2's RESOLVE_NO_SYMLINKS, or O_NOFOLLOW
+// for its last part on kernels before 5.6), so a link planted by an earlier
+// run can never make the grader give away another folder (results.json's).
+bool hand_over(const std::string& dir, uid_t uid, gid_t gid) {
+  open_how how{};
+  how.flags = O_RDONLY | O_DIRECTORY | O_CLOEXEC;
+  how.resolve = RESOLVE_NO_SYMLINKS;
+  int fd = static_cast<int>(::syscall(SYS_openat2, AT_FDCWD, dir.c_str(), &how, sizeof how));
+  if (fd < 0 && errno == ENOSYS) fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fchown(fd, uid, gid) == 0;
+  ::close(fd);
+  return ok;
+}
+
+}  // namespace
+
+Sandbox::Sandbox(SandboxOptions options) : options_(std::move(options)), plan_(new Plan) {
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/pt-grade-XXXXXX";
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder in " + pattern);
+  scratch_ = fs::canonical(pattern).string();  // no link in it: hand_over() follows none
+  // Every orphan of a run is handed to the grader, which kills it: the last
+  // resort when no PID namespace holds the run together.
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
+  install_interrupt_handlers();
+  plan_->limits = options_.limits;
+  for (const auto& p : options_.readable) plan_->readable.push_back(fs::absolute(p).lexically_normal().string());
+  probe();
+}
+
+Sandbox::~Sandbox() {
+  std::error_code ec;
+  fs::remove_all(scratch_, ec);
+  delete plan_;
+}
+
+namespace {
+
+// Why each layer the sandbox could have is missing ("" where it holds).
+struct LayerNotes {
+  std::string namespaces, tmpfs, proc, user, landlock, seccomp;
+};
+
+const std::string kTurnedOff = ": left out (--sandbox-without)";
+
+bool wanted(const SandboxOptions& options, const char* layer) {
+  return std::find(options.without.begin(), options.without.end(), layer) == options.without.end();
+}
+
+// Who runs the code under test: the unprivileged account when the grader is
+// root, else the grader's own user.
+void choose_user(confine::Plan& p, const SandboxOptions& options, LayerNotes& notes) {
+  const bool root = ::geteuid() == 0;
+  if (root && !wanted(options, "user")) {
+    notes.user = "unprivileged user" + kTurnedOff + " (the code under test runs as root)";
+  } else if (root) {
+    if (const passwd* pw = ::getpwnam(options.user.c_str())) {
+      p.switch_user = true;
+      p.uid = pw->pw_uid;
+      p.gid = pw->pw_gid;
+    } else {
+      notes.user = "unprivileged user: there is no account \"" + options.user + "\" (the code under test runs as root)";
+    }
+  } else {
+    notes.user = "unprivileged user: the grader is not root, so the code under test runs as the grader's own user";
+  }
+}
+
+void drop_namespaces(confine::Plan& p) { p.user_ns = p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = false; }
+
+// Every layer this build and kernel could offer, less those left out.
+void offered_layers(confine::Plan& p, const SandboxOptions& options, LayerNotes& notes) {
+  p.user_ns = ::geteuid() != 0;
+  p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = true;
+  p.landlock_abi = landlock_abi();
+  p.seccomp = seccomp_available();
+  if (p.landlock_abi == 0) notes.landlock = "Landlock: this kernel does not offer it";
+  if (!p.seccomp) notes.seccomp = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
+  if (!wanted(options, "namespaces")) {
+    drop_namespaces(p);
+    notes.namespaces = "namespaces" + kTurnedOff;
+  }
+  if (!wanted(options, "landlock")) {
+    p.landlock_abi = 0;
+    notes.landlock = "Landlock" + kTurnedOff;
+  }
+  if (!wanted(options, "seccomp")) {
+    p.seccomp = false;
+    notes.seccomp = "seccomp" + kTurnedOff;
+  }
+}
+
+// A probe run's failed step: the layer it drops, and why. False for a step
+// no run can do without.
+bool drop_failed_layer(confine::Plan& p, const Failure& f, const std::string& user, LayerNotes& notes,
+                       bool& namespaces_dropped) {
+  if (f.step == "uid-map" || f.step == "mount-private") {
+    if (!namespaces_dropped) {
+      notes.namespaces = "namespaces: " + f.step + ": " + f.what;
+      drop_namespaces(p);
+      namespaces_dropped = true;
+    }
+  } else if (f.step == "tmpfs") {
+    p.tmpfs = false;
+    notes.tmpfs = "private tmpfs working directory: " + f.what + " (a folder on disk instead)";
+  } else if (f.step == "proc") {
+    p.proc = false;
+    notes.proc = "private /proc: " + f.what;
+  } else if (f.step == "landlock") {
+    p.landlock_abi = 0;
+    notes.landlock = "Landlock: " + f.what;
+  } else if (f.step == "seccomp") {
+    p.seccomp = false;
+    notes.seccomp = "seccomp: " + f.what;
+  } else if (f.step == "user") {
+    p.switch_user = false;
+    notes.user = "unprivileged user: cannot become " + user + ": " + f.what;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Runs this program through every layer planned, up to exec, and drops what
+// fails, until a probe run passes them all.
+void keep_layers_that_work(confine::Plan& p, const std::string& scratch, const std::string& user, LayerNotes& notes) {
+  char self[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  RunRequest request;
+  request.binary = n > 0 ? std::string(self, static_cast<size_t>(n)) : "/proc/self/exe";
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    p.nproc = p.switch_user || p.user_ns;
+    const std::string workdir = scratch + "/probe-" + std::to_string(attempt);
+    ::mkdir(workdir.c_str(), 0700);
+    FixedDeadline observer(10);
+    Fd no_link_read, no_link_write;
+    const SpawnResult r = spawn(p, workdir, request, observer, /*probe=*/true, no_link_read, no_link_write);
+    std::error_code ec;
+    fs::remove_all(workdir, ec);
+    if (r.clone_errno != 0) {
+      notes.namespaces = std::string("namespaces: clone() refused them: ") + std::strerror(r.clone_errno);
+      drop_namespaces(p);
+      continue;
+    }
+    bool namespaces_dropped = false;
+    for (const Failure& f : r.failures)
+      if (!drop_failed_layer(p, f, user, notes, namespaces_dropped))
+        throw std::runtime_error("the sandbox cannot start here: " + f.step + ": " + f.what);
+    if (r.failures.empty()) return;
+    if (attempt == 3) throw std::runtime_error("the sandbox's probe does not settle");
+  }
+}
+
+// The layers in force, in words for the report.
+std::vector<std::string> describe_layers(const confine::Plan& p, const std::string& user) {
+  std::vector<std::string> active;
+  const SandboxLimits& l = p.limits;
+  if (p.pid_ns)
+    active.push_back("PID namespace: every process of a run dies with it");
+  else
+    active.push_back("child subreaper: whatever a run leaves behind is killed at its end");
+  if (p.user_ns) active.push_back("user namespace: no capability inside or out");
+  if (p.ipc_ns) active.push_back("IPC namespace: System V objects and POSIX message queues die with the run");
+  if (p.tmpfs) active.push_back("private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
+  if (!p.tmpfs) active.push_back("private working directory");
+  if (p.proc) active.push_back("private /proc: other processes are invisible");
+  if (p.switch_user) active.push_back("runs as " + user);
+  active.push_back("own session, no terminal");
+  std::ostringstream limits;
+  limits << "limits: address space " << mebibytes(l.address_space) << ", CPU " << l.cpu_seconds << " s, files "
+         << mebibytes(l.file_size) << ", " << l.open_files << " open files";
+  if (p.nproc) limits << ", " << l.processes << " processes and threads";
+  active.push_back(limits.str());
+  if (p.landlock_abi > 0)
+    active.push_back("Landlock ABI " + std::to_string(p.landlock_abi) +
+                     ": reads only the system and the given paths, writes only its working directory, executes only "
+                     "itself" +
+                     (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
+  if (p.seccomp)
+    active.push_back("seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; "
+                     "signals only to itself");
+  active.push_back("output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
+                   std::to_string(l.output_tail >> 10) + " KiB kept");
+  return active;
+}
+
+}  // namespace
+
+void Sandbox::probe() {
+  active_.clear();
+  missing_.clear();
+  if (!options_.confine) {
+    active_.push_back("none but limits, its own session and a child subreaper (--no-sandbox)");
+    return;
+  }
+  Plan& p = *plan_;
+  LayerNotes notes;
+  choose_user(p, options_, notes);
+  offered_layers(p, options_, notes);
+  keep_layers_that_work(p, scratch_, options_.user, notes);
+  active_ = describe_layers(p, options_.user);
+  for (const std::string* note : {&notes.namespaces, &notes.tmpfs, &notes.proc, &notes.user, &notes.landlock,
+                                  &notes.seccomp})
+    if (!note->empty()) missing_.push_back(*note);
+  if (!p.nproc && !p.seccomp) missing_.push_back("process limit: nothing stops a fork bomb but the time limits");
+}
+
+std::vector<std::string> Sandbox::layer_ids() const {
+  const Plan& p = *plan_;
+  if (!options_.confine) return {};
+  std::vector<std::string> ids{p.pid_ns ? "pid-ns" : "subreaper", "session", "rlimits", "workdir"};
+  if (p.user_ns) ids.push_back("user-ns");
+  if (p.ipc_ns) ids.push_back("ipc-ns");
+  if (p.tmpfs) ids.push_back("tmpfs");
+  if (p.proc) ids.push_back("proc");
+  if (p.switch_user) ids.push_back("user");
+  if (p.nproc) ids.push_back("nproc");
+  if (p.landlock_abi > 0) ids.push_back("landlock");
+  if (p.seccomp) ids.push_back("seccomp");
+  if (p.seccomp || p.nproc) ids.push_back("no-fork");
+  return ids;
+}
+
+RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
+  Fd link_read(request.link_read), link_write(request.link_write);  // the run's, whatever happens
+  // The process id too: a verifier's worker is run by a helper process with
+  // a copy of this Sandbox (grade_part.cpp).
+  const std::string workdir = scratch_ + "/run-" + std::to_string(::getpid()) + "-" + std::to_string(++runs_);
+  if (::mkdir(workdir.c_str(), 0700) != 0) {
+    RunOutcome r;
+    r.exit = not_started("cannot create " + workdir + ": " + std::strerror(errno));
+    return r;
+  }
+  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid)) {
+    RunOutcome r;
+    r.exit = not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
+    return r;
+  }
+  RunRequest absolute = request;  // the child resolves paths from its own working directory
+  absolute.binary = fs::absolute(request.binary).lexically_normal().string();
+  if (!request.output_dir.empty()) {
+    absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
+    if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid)) {
+      RunOutcome r;
+      r.exit = not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
+      return r;
+    }
+  }
+  SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write);
+  std::error_code ec;
+  fs::remove_all(workdir, ec);
+  return std::move(r.outcome);
+}
+
+}  // namespace pt::grade

@@ -1,0 +1,97 @@
+#pragma once
+// The stages `pt-grade submission` and `pt-grade check-submission` share, in
+// the grader's order, so that a student's check gives the grader's own
+// verdicts and messages:
+//
+//  1. the files (intake/submission_files.h): anything but task files, in a
+//     folder or a zip, rejects the whole submission before anything is built;
+//  2. each file's encoding and includes (source_scan.h): a refusal costs that
+//     part only; the flags go to the instructor;
+//  3. each part built on its own by a PartBuilder (the grading kit's confined
+//     tree, or the student's own build), then the compiler's own list of the
+//     files it read checked (compile/dependency_check.h): a refusal costs
+//     that part only;
+//  4. each part built graded in the sandbox (run/grade_part.h).
+//
+// What differs is where a part is built and what becomes of each stage's
+// result: each command is an Ending (submission.h: the grader's reports;
+// check_submission.h: the student's answer).
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "intake/submission_files.h"
+#include "report/redact.h"
+#include "run/grade_part.h"
+
+namespace pt::grade {
+
+enum class Stage { Files, Includes, Build, Reads };
+
+// A part built: its test binary, or its verifier (the kit's tests) and the
+// worker built from the task file (boundary/README.md).
+struct BuiltPart {
+  std::string binary, worker;
+};
+
+// Where stage 3 builds a part.
+class PartBuilder {
+ public:
+  virtual ~PartBuilder() = default;
+  // "" with *built filled in, or why the part scores 0 (the compiler's
+  // errors, the time limit), in the words of the report.
+  virtual std::string build(const TaskFile& file, BuiltPart* built) = 0;
+  // The files the compiler read for the part's task file that it may not
+  // read (compile/dependency_check.h).
+  virtual std::vector<std::string> unexpected_reads(const TaskFile& file) = 0;
+};
+
+// What a command makes of each stage as it ends, for one file.
+class Ending {
+ public:
+  virtual ~Ending() = default;
+  virtual void refused(const TaskFile& file, Stage stage, const std::string& why) = 0;
+  virtual void accepted(const TaskFile&) {}  // stage 2 passed
+  virtual void built(const TaskFile&, double /*seconds*/) {}
+};
+
+class Pipeline {
+ public:
+  // `expected`: each part's task file name; `headers`: the framework's headers
+  // a task file may include; `graded`: the parts that have graded tests (a
+  // file of another part is refused at stage 1).
+  Pipeline(std::map<int, std::string> expected, std::set<std::string> headers, std::set<int> graded, Ending& ending);
+
+  // 1. False when the submission is rejected whole: submission().problems.
+  bool take_files(const std::string& path);
+  // 2. `flags`, when given, receives the instructor's source flags.
+  void check_includes(std::vector<std::string>* flags);
+  // 3.
+  void build(PartBuilder& builder);
+  // 4. One part that was built.
+  PartResult grade(int part, const PartManifest& tests, const GradeLimits& limits, Sandbox& sandbox,
+                   const Redactor& redactor, const ImageFolders* images) const;
+
+  const Submission& submission() const { return submission_; }
+  const std::vector<const TaskFile*>& buildable() const { return buildable_; }
+  const std::map<int, BuiltPart>& built() const { return built_; }
+  const std::map<int, std::string>& expected() const { return expected_; }
+  // Why a graded part was not submitted ("" when it was).
+  std::string not_submitted(int part) const;
+
+ private:
+  std::map<int, std::string> expected_;
+  std::set<std::string> headers_;
+  std::set<int> graded_;
+  Ending& ending_;
+  Submission submission_;
+  std::vector<const TaskFile*> buildable_;
+  std::map<int, BuiltPart> built_;
+};
+
+// What a failed build printed that a student needs: the compiler's errors
+// first, paths relative to tree_dir, ninja's progress left out, 40 lines at most.
+std::string compiler_errors(const std::string& output, const std::string& tree_dir);
+
+}  // namespace pt::grade
