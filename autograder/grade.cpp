@@ -457,8 +457,21 @@ int main(int argc, char** argv) {
   scrub_gtest_environment();
   hide_command_line(argc, argv, "pt-grade");
   try {
-    for (const Command& c : commands)
-      if (*c.cmd) return c.action();
+    for (const Command& c : commands) {
+      if (!*c.cmd) continue;
+      // Without the sandbox (a build off Linux) only the student's own check
+      // runs code, and the manifest lists the course's own binaries.
+      const std::string name = c.cmd->get_name(), missing = sandbox_unavailable();
+      if (!missing.empty() && name != "check-submission" && name != "manifest") {
+        std::fprintf(stderr,
+                     "pt-grade %s: grading needs Linux's sandbox, which this build does not have (PT_SANDBOX is off): "
+                     "run it on your course's grader, in WSL or in the dev container (.devcontainer/); here, "
+                     "pt-grade check-submission checks your task files.\n",
+                     name.c_str());
+        return 2;
+      }
+      return c.action();
+    }
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pt-grade: %s\n", e.what());

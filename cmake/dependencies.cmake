@@ -22,20 +22,29 @@ if(NOT DEFINED PT_THIRD_PARTY)  # the instructor's build of the libc++ solution 
   set(PT_THIRD_PARTY ${CMAKE_SOURCE_DIR}/third_party)
 endif()
 
-# The grader (pt-grade: its score, check-submission, sandbox and process
-# boundary; autograder/) is built on the Linux process interfaces it confines
-# code with (namespaces, seccomp, Landlock, prctl, /proc). Elsewhere (macOS)
-# the build leaves it out and says what to use instead: the framework, the
-# renderers and every partN_tests build everywhere.
+# The grader (pt-grade, autograder/) builds everywhere; its sandbox does not.
+# PT_SANDBOX is the grader's Linux-only part: the sandbox's layers
+# (namespaces, seccomp, Landlock: autograder/sandbox/), the grading kit's
+# confined build and work area (compile/), the launcher's clone() and parent
+# death signal (process/launcher_linux.cpp), the process boundary (boundary/,
+# run/worker_run.cpp) and pt-link-guard (GNU nm on ELF objects). Off (macOS),
+# pt-grade keeps check-submission: the files, the includes, each part built,
+# the visible tests run as plain processes, and it says what only the grader
+# checks; the commands that grade refuse, naming where to run them.
 if(CMAKE_SYSTEM_NAME STREQUAL "Linux")
-  option(PT_GRADER "Build the grader pt-grade and the process boundary (Linux only)" ON)
+  option(PT_SANDBOX "Build the grader's sandbox, process boundary and link guard (Linux only)" ON)
 else()
-  set(PT_GRADER OFF)
+  set(PT_SANDBOX OFF)
 endif()
-if(NOT PT_GRADER AND NOT PT_PREBUILT_ONLY)  # PT_PREBUILT_ONLY: tools/release/prebuilt/
-  message(WARNING "No grader in this build (it needs Linux): ./build/tests/partN_tests runs each part's visible tests, "
-                  "but pt-grade (your score, check-submission before you submit) is not built. Check your submission "
-                  "in WSL, the dev container (.devcontainer/) or your course's GitHub Classroom run (README.md).")
+option(PT_GRADER "Build the grader pt-grade (check-submission; grading too with PT_SANDBOX)" ON)
+if(NOT PT_PREBUILT_ONLY AND NOT PT_GRADER)  # PT_PREBUILT_ONLY: tools/release/prebuilt/
+  message(WARNING "No grader in this build (PT_GRADER is off): ./build/tests/partN_tests runs each part's visible "
+                  "tests, but pt-grade check-submission is not built.")
+elseif(NOT PT_PREBUILT_ONLY AND NOT PT_SANDBOX)
+  message(WARNING "No sandbox in this build (it needs Linux): pt-grade check-submission checks your files, builds "
+                  "each part and runs its visible tests, and says what only the grader checks (the sandbox, the "
+                  "process boundary, the link guard, the hidden tests). For the grader's own checks: WSL, the dev "
+                  "container (.devcontainer/) or your course's GitHub Classroom run (README.md).")
 endif()
 
 include(CheckCXXSourceCompiles)

@@ -16,7 +16,9 @@
 //   output       through a pipe, only the head and tail of it kept
 //
 // Each layer is probed once; what this machine does not offer is left out and
-// named in layers_missing(), never silently assumed. Linux only.
+// named in layers_missing(), never silently assumed. Linux only (sandbox.cpp);
+// a build without it (PT_SANDBOX off: macOS) has unconfined.cpp, a plain
+// child process with every layer missing, for the student's own check.
 #include <sys/types.h>
 
 #include <chrono>
@@ -88,6 +90,10 @@ struct RunOutcome {
   std::string output;         // stdout and stderr interleaved: the head, a gap marker, the tail
   uint64_t output_bytes = 0;  // all it wrote, kept or not
 };
+
+// "" where this build confines code (PT_SANDBOX); otherwise why it cannot,
+// for the commands that refuse to grade without it.
+std::string sandbox_unavailable();
 
 class Sandbox {
  public:

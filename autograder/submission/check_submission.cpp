@@ -292,6 +292,22 @@ Report grade_visible(const CheckOptions& opt, const Manifest& manifest, const fs
   return report;
 }
 
+// Without the sandbox (a build off Linux: PT_SANDBOX), what this check
+// cannot do, first: its READY is about what it checked.
+void print_not_checked() {
+  if (sandbox_unavailable().empty()) return;
+  std::fputs("Not checked on this platform (this pt-grade has no sandbox: it needs Linux); the grader checks each:\n"
+             "  - the sandbox: your tests ran here as plain processes, so code that forks, writes outside its\n"
+             "    folder, or outgrows the grader's limits passes here and fails there;\n"
+             "  - the process boundary: here each part's tests and your task file ran in one process; the grader\n"
+             "    runs your task functions in a worker process of their own;\n"
+             "  - pt-link-guard: what your task file's compiled code defines and calls;\n"
+             "  - the hidden tests (as on every platform: the release does not have them).\n"
+             "READY below means ready as far as these checks go. For the grader's own checks: WSL, the dev\n"
+             "container (.devcontainer/) or your course's GitHub Classroom run.\n\n",
+             stdout);
+}
+
 // The answer first: per part, whose the file is, its visible score, what
 // differs; then how the check found it; the parts not started folded.
 void print_check(const Report& report, const Pipeline& pipeline, const Answer& answer) {
@@ -329,6 +345,7 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
     }
     answers.push_back(a);
   }
+  print_not_checked();
   print_answer(answers, answer.problems);
   std::printf("\nHow this check found it:\n");
   std::fputs(answer.details.c_str(), stdout);
@@ -369,6 +386,7 @@ int check_submission(const CheckOptions& opt) {
   const Submission& sub = pipeline.submission();
   for (const auto& n : sub.notes) answer.details += indented(n);
   if (!taken) {
+    print_not_checked();
     std::string why = "submission rejected before building:";
     for (const auto& p : sub.problems) why += "\n  " + p;
     std::fputs(indented(why).c_str(), stdout);
@@ -386,8 +404,13 @@ int check_submission(const CheckOptions& opt) {
   answer.heading("4. Each part built on its own, as the grader builds it");
   ReleaseBuild release_build(source, build, opt.build_dir, answer);
   pipeline.build(release_build);
+  if (!sandbox_unavailable().empty())
+    answer.say("   not checked here: pt-link-guard (it needs Linux); the grader runs it on each part's object\n");
 
   answer.heading("5. The visible tests");
+  if (!sandbox_unavailable().empty())
+    answer.say("   run here as plain processes, each part's tests with its task file in one process; the grader runs "
+               "them in its sandbox, across the process boundary\n");
   const fs::path manifest_path = build / "tests" / "graded_manifest.json";
   if (!fs::is_regular_file(manifest_path)) {
     std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
