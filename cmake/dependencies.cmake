@@ -37,6 +37,21 @@ else()
   set(PT_SANDBOX OFF)
 endif()
 option(PT_GRADER "Build the grader pt-grade (check-submission; grading too with PT_SANDBOX)" ON)
+# pt-grade reads a zipped submission with libarchive: Debian's libarchive-dev
+# (setup.sh), Homebrew's libarchive (keg-only: CMAKE_PREFIX_PATH names it).
+# Without it a build without the sandbox (a student's Mac) leaves pt-grade out
+# and says how to get it; the grader's own build (Linux) stops.
+if(PT_GRADER AND NOT PT_PREBUILT_ONLY)
+  find_package(LibArchive)
+  if(NOT LibArchive_FOUND AND PT_SANDBOX)
+    message(FATAL_ERROR "pt-grade needs libarchive (libarchive-dev: ./setup.sh installs it)")
+  elseif(NOT LibArchive_FOUND)
+    message(WARNING "pt-grade (check-submission) needs libarchive, which was not found: brew install libarchive, "
+                    "then configure again with -DCMAKE_PREFIX_PATH=\"$(brew --prefix libarchive)\". Everything else "
+                    "builds without it.")
+    set(PT_GRADER OFF)
+  endif()
+endif()
 if(NOT PT_PREBUILT_ONLY AND NOT PT_GRADER)  # PT_PREBUILT_ONLY: tools/release/prebuilt/
   message(WARNING "No grader in this build (PT_GRADER is off): ./build/tests/partN_tests runs each part's visible "
                   "tests, but pt-grade check-submission is not built.")

@@ -40,7 +40,7 @@ std::string points_number(double v) {
   return s;
 }
 
-void print_answer(const std::vector<PartAnswer>& parts, const std::vector<std::string>& problems) {
+void print_answer(const std::vector<PartAnswer>& parts, const std::vector<std::string>& problems, bool as_grader) {
   std::printf("\n%-5s %-46s %-16s %s\n", "part", "task file", "visible points", "at grading");
   for (const auto& p : parts) {
     std::string at_grading = p.differs;
@@ -50,6 +50,12 @@ void print_answer(const std::vector<PartAnswer>& parts, const std::vector<std::s
                     " not run here";
     const std::string score = points_number(p.earned) + " / " + points_number(p.possible);
     std::printf("%-5d %-46s %-16s %s\n", p.part, p.state.c_str(), score.c_str(), at_grading.c_str());
+  }
+  if (problems.empty() && !as_grader) {
+    std::printf("\nREADY, as far as this platform can check: the grader will build these files as this check did; "
+                "it also runs them in its sandbox, across the process boundary, after pt-link-guard, and runs the "
+                "hidden tests, none of which this check could do here.\n");
+    return;
   }
   if (problems.empty()) {
     std::printf("\nREADY: the grader will build and run these files as this check did; it also runs the hidden "

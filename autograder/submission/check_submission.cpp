@@ -346,7 +346,7 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
     answers.push_back(a);
   }
   print_not_checked();
-  print_answer(answers, answer.problems);
+  print_answer(answers, answer.problems, sandbox_unavailable().empty());
   std::printf("\nHow this check found it:\n");
   std::fputs(answer.details.c_str(), stdout);
   if (!started.parts.empty()) print_report(started, false);

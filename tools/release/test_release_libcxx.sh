@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
 # The student release as a Mac builds it, on Linux (ctest: release:libcxx):
 # clang with libc++ (macOS's standard library), only the third-party code the
-# release ships (third_party/, the system's packages ignored), and no grader
-# (-DPT_GRADER=OFF, as off Linux):
+# release ships (third_party/, the system's packages ignored), and no sandbox
+# (-DPT_SANDBOX=OFF, as off Linux: pt-grade with check-submission only):
 #  1. unpack student-release.tar.gz into an empty folder;
 #  2. configure with CXX=clang++ CXXFLAGS=-stdlib=libc++ -DPT_SYSTEM_DEPS=OFF
-#     -DPT_GRADER=OFF: every shipped copy in use, the prebuilt solution for
-#     linux-<arch>-libc++ found, the grader's absence said;
+#     -DPT_SANDBOX=OFF: every shipped copy in use, the prebuilt solution for
+#     linux-<arch>-libc++ found, the sandbox's absence said;
 #  3. the README's second set-up command (build everything, every release
 #     test passes); no object read a third-party header from the system
 #     (ninja's record of the headers each compile read), and no binary links
-#     GCC's libstdc++;
+#     GCC's libstdc++; pt-grade built, without pt-link-guard, verifiers or
+#     workers; no compile read a header only Linux has, no object calls what
+#     only Linux's C library has (check_portable.sh); the commands that grade
+#     refuse, naming where to run them;
 #  4. the untouched stubs fail every visible graded test naming its task
-#     (check-stubs of the checkout's own pt-grade, per part);
-#  5. the reference's task files as a student's: every partN_tests passes;
+#     (check-stubs of the checkout's own pt-grade, per part); the release's
+#     pt-grade check-submission on them: what it could not check said first,
+#     then per step, READY as far as it goes, every part not started; and on a
+#     folder with a file the grader refuses: NOT READY, nothing built;
+#  5. the reference's task files as a student's: check-submission says READY
+#     with every visible point of every part (its tests run unconfined);
 #  6. the same tree with no libraries for its platform (the libc++ folder
 #     taken away): configure warns, part 2's tests and pathtracer build and
 #     link, every part is the student's, said at start; with part 2 done, its
@@ -31,10 +38,10 @@ tar xzf "$archive" -C "$work"
 cd "$work/student-release"
 export CXX=clang++ CXXFLAGS=-stdlib=libc++
 
-echo "== 2. configure with clang and libc++, the system's third-party packages ignored, no grader"
-cmake --preset default -DPT_SYSTEM_DEPS=OFF -DPT_GRADER=OFF 2>&1 | tee configure.out
-tr -s ' \n' ' ' < configure.out | grep -q "No grader in this build (it needs Linux)" ||
-  { echo "configure did not say the grader is left out"; exit 1; }
+echo "== 2. configure with clang and libc++, the system's third-party packages ignored, no sandbox"
+cmake --preset default -DPT_SYSTEM_DEPS=OFF -DPT_SANDBOX=OFF 2>&1 | tee configure.out
+tr -s ' \n' ' ' < configure.out | grep -q "No sandbox in this build (it needs Linux): pt-grade check-submission" ||
+  { echo "configure did not say the sandbox is left out"; exit 1; }
 grep -q "Shipped third-party copies in use (third_party/): glm;nlohmann-json;CLI11;pcg;boost;tinyexr;tinyobjloader;stb;googletest" \
   configure.out || { echo "not every shipped copy is in use"; exit 1; }
 platform="linux-$(uname -m | sed 's/aarch64/arm64/')-libc++"
@@ -57,7 +64,21 @@ if grep -E '^ +/usr/(local/)?include/(glm/|nlohmann/|CLI/|boost/|gtest/|stb/|tin
 fi
 grep -q "third_party/boost/include/boost/math/distributions/students_t.hpp" deps.out ||
   { echo "the shipped Boost.Math was not read"; exit 1; }
-[ ! -e build/autograder/pt-grade ] || { echo "the grader was built"; exit 1; }
+grade=build/autograder/pt-grade
+[ -x "$grade" ] || { echo "pt-grade was not built"; exit 1; }
+for b in build/autograder/pt-link-guard build/tests/part1_verify build/tests/part1_worker; do
+  [ ! -e "$b" ] || { echo "$b was built without the sandbox"; exit 1; }
+done
+if ninja -C build -t targets all | grep -E '^(autograder/pt-link-guard|tests/part[1-5]_(verify|worker)):'; then
+  echo "a target of the grader's Linux part is defined without the sandbox"; exit 1
+fi
+"$here/check_portable.sh" build
+for cmd in "run" "submission tasks" "check-stubs --part 1 build/tests/part1_tests" "sandbox"; do
+  # shellcheck disable=SC2086  # the command's words
+  if "$grade" $cmd > refused.out 2>&1; then cat refused.out; echo "pt-grade $cmd ran without the sandbox"; exit 1; fi
+  grep -q "grading needs Linux's sandbox, which this build does not have (PT_SANDBOX is off): run it on your course's grader, in WSL or in the dev container" refused.out ||
+    { cat refused.out; echo "pt-grade $cmd did not say why it refuses"; exit 1; }
+done
 for b in build/tests/part1_tests build/pathtracer; do
   ldd "$b" | grep -q 'libc++\.so' || { ldd "$b"; echo "$b: not linked with libc++"; exit 1; }
   ! ldd "$b" | grep -Eq 'libgtest|libtinyexr|libtinyobjloader|libstb' || { ldd "$b"; echo "$b: links a system library"; exit 1; }
@@ -72,19 +93,47 @@ for n in 1 2 3 4 5; do
   "$grade" check-stubs --sandbox-read "$PWD/scenes" --part "$n" "build/tests/part${n}_tests"
 done
 
-echo "== 5. the reference's task files: every visible graded test passes"
+# What check-submission says first without the sandbox, and in steps 4 and 5.
+expect_not_checked() {  # expect_not_checked FILE
+  head -n 12 "$1" | grep -q '^Not checked on this platform (this pt-grade has no sandbox: it needs Linux); the grader checks each:' &&
+    grep -q '^  - the sandbox: your tests ran here as plain processes' "$1" &&
+    grep -q '^  - the process boundary: here each part' "$1" &&
+    grep -q "^  - pt-link-guard: what your task file's compiled code defines and calls;" "$1" &&
+    grep -q '^  - the hidden tests' "$1" ||
+    { cat "$1"; echo "$1: check-submission did not say first what it could not check"; exit 1; }
+}
+echo "== 4b. check-submission without the sandbox: the stubs, then a file the grader refuses"
+"$grade" check-submission > stubs-check.out 2> /dev/null || { cat stubs-check.out; echo "check-submission on the stubs: not READY"; exit 1; }
+expect_not_checked stubs-check.out
+grep -q '^READY, as far as this platform can check:' stubs-check.out &&
+  grep -q '^   not checked here: pt-link-guard (it needs Linux)' stubs-check.out &&
+  grep -q '^   run here as plain processes, each part' stubs-check.out ||
+  { cat stubs-check.out; echo "check-submission did not say how far its READY goes, or what steps 4 and 5 left out"; exit 1; }
+for n in 1 2 3 4 5; do
+  grep -Eq "^$n +not started +0 / [0-9.]+ +\+ hidden: [0-9]+ tests, [0-9.]+ points? not run here" stubs-check.out ||
+    { cat stubs-check.out; echo "part $n: not answered as not started"; exit 1; }
+done
+mkdir -p refused && cp tasks/*.cpp refused/ && echo "notes" > refused/notes.txt
+if "$grade" check-submission refused > refused-check.out 2> /dev/null; then cat refused-check.out; echo "a refused folder was READY"; exit 1; fi
+expect_not_checked refused-check.out
+grep -q '^NOT READY: the grader would reject every part. Nothing was built.' refused-check.out ||
+  { cat refused-check.out; echo "a refused folder was not NOT READY"; exit 1; }
+
+echo "== 5. the reference's task files: check-submission says READY, every visible point"
 cp tasks/part*.cpp "$work/"
 cp "$source"/reference/part*.cpp tasks/
-cmake --build --preset default
+"$grade" check-submission > reference-check.out 2> /dev/null || { cat reference-check.out; echo "the reference: not READY"; exit 1; }
+expect_not_checked reference-check.out
+grep -q '^READY, as far as this platform can check:' reference-check.out || { cat reference-check.out; echo "not READY"; exit 1; }
 for n in 1 2 3 4 5; do
-  "build/tests/part${n}_tests" > "reference-part$n.out" 2>&1 || { tail -30 "reference-part$n.out"; echo "part $n: a test failed"; exit 1; }
-  grep -E '^\[  PASSED  \] [0-9]+ tests?\.$' "reference-part$n.out"
+  grep -Eq "^$n +yours +([0-9.]+) / \1 +\+ hidden: [0-9]+ tests, [0-9.]+ points? not run here" reference-check.out ||
+    { cat reference-check.out; echo "part $n: not every visible point"; exit 1; }
 done
 cp "$work"/part*.cpp tasks/
 
 echo "== 6. no libraries for this platform: the student's own parts, said, never a link error"
 mv "prebuilt/$platform" "$work/prebuilt-aside"
-cmake -S . -B build-none -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPT_SYSTEM_DEPS=OFF -DPT_GRADER=OFF \
+cmake -S . -B build-none -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPT_SYSTEM_DEPS=OFF -DPT_SANDBOX=OFF \
   > none-configure.out 2>&1 || { cat none-configure.out; exit 1; }
 tr -s ' \n' ' ' < none-configure.out | grep -q "This release has no prebuilt solution for $platform" ||
   { cat none-configure.out; echo "configure did not warn"; exit 1; }
