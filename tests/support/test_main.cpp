@@ -35,7 +35,6 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -56,6 +55,10 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#ifdef PT_UNDUMPABLE  // with the grader's sandbox (Linux's: tests/CMakeLists.txt); macOS has no prctl
+#include <sys/prctl.h>
+#endif
 
 #include "support/graded.h"
 #include "support/image_test_files.h"
@@ -81,7 +84,9 @@ void take_channel(int argc, char** argv, char**) {
     int verdicts = -1, key = -1;
     char extra;
     if (std::sscanf(argv[i], "--pt_channel=%d,%d%c", &verdicts, &key, &extra) != 2) continue;
+#ifdef PT_UNDUMPABLE
     ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+#endif
     size_t got = 0;
     while (is_fifo(key) && got < kKeyLength) {
       const ssize_t n = ::read(key, g_channel_key + got, kKeyLength - got);
@@ -102,7 +107,7 @@ void take_channel(int argc, char** argv, char**) {
 
 #ifdef __ELF__
 __attribute__((section(".preinit_array"), used)) void (*const g_take_channel)(int, char**, char**) = take_channel;
-#endif  // elsewhere (macOS) main() takes it: no grader runs there (pt-grade is Linux only)
+#endif  // elsewhere (macOS) main() takes it: check-submission's runs there, unconfined
 
 void write_all(int fd, const std::string& text) {
   size_t done = 0;
