@@ -64,8 +64,8 @@ if grep -E '^ +/usr/(local/)?include/(glm/|nlohmann/|CLI/|boost/|gtest/|stb/|tin
 fi
 grep -q "third_party/boost/include/boost/math/distributions/students_t.hpp" deps.out ||
   { echo "the shipped Boost.Math was not read"; exit 1; }
-grade=build/autograder/pt-grade
-[ -x "$grade" ] || { echo "pt-grade was not built"; exit 1; }
+own=build/autograder/pt-grade  # the release's ($grade is the checkout's, with its sandbox)
+[ -x "$own" ] || { echo "pt-grade was not built"; exit 1; }
 for b in build/autograder/pt-link-guard build/tests/part1_verify build/tests/part1_worker; do
   [ ! -e "$b" ] || { echo "$b was built without the sandbox"; exit 1; }
 done
@@ -75,7 +75,7 @@ fi
 "$here/check_portable.sh" build
 for cmd in "run" "submission tasks" "check-stubs --part 1 build/tests/part1_tests" "sandbox"; do
   # shellcheck disable=SC2086  # the command's words
-  if "$grade" $cmd > refused.out 2>&1; then cat refused.out; echo "pt-grade $cmd ran without the sandbox"; exit 1; fi
+  if "$own" $cmd > refused.out 2>&1; then cat refused.out; echo "pt-grade $cmd ran without the sandbox"; exit 1; fi
   grep -q "grading needs Linux's sandbox, which this build does not have (PT_SANDBOX is off): run it on your course's grader, in WSL or in the dev container" refused.out ||
     { cat refused.out; echo "pt-grade $cmd did not say why it refuses"; exit 1; }
 done
@@ -103,7 +103,7 @@ expect_not_checked() {  # expect_not_checked FILE
     { cat "$1"; echo "$1: check-submission did not say first what it could not check"; exit 1; }
 }
 echo "== 4b. check-submission without the sandbox: the stubs, then a file the grader refuses"
-"$grade" check-submission > stubs-check.out 2> /dev/null || { cat stubs-check.out; echo "check-submission on the stubs: not READY"; exit 1; }
+"$own" check-submission > stubs-check.out 2> /dev/null || { cat stubs-check.out; echo "check-submission on the stubs: not READY"; exit 1; }
 expect_not_checked stubs-check.out
 grep -q '^READY, as far as this platform can check:' stubs-check.out &&
   grep -q '^   not checked here: pt-link-guard (it needs Linux)' stubs-check.out &&
@@ -114,7 +114,7 @@ for n in 1 2 3 4 5; do
     { cat stubs-check.out; echo "part $n: not answered as not started"; exit 1; }
 done
 mkdir -p refused && cp tasks/*.cpp refused/ && echo "notes" > refused/notes.txt
-if "$grade" check-submission refused > refused-check.out 2> /dev/null; then cat refused-check.out; echo "a refused folder was READY"; exit 1; fi
+if "$own" check-submission refused > refused-check.out 2> /dev/null; then cat refused-check.out; echo "a refused folder was READY"; exit 1; fi
 expect_not_checked refused-check.out
 grep -q '^NOT READY: the grader would reject every part. Nothing was built.' refused-check.out ||
   { cat refused-check.out; echo "a refused folder was not NOT READY"; exit 1; }
@@ -122,7 +122,7 @@ grep -q '^NOT READY: the grader would reject every part. Nothing was built.' ref
 echo "== 5. the reference's task files: check-submission says READY, every visible point"
 cp tasks/part*.cpp "$work/"
 cp "$source"/reference/part*.cpp tasks/
-"$grade" check-submission > reference-check.out 2> /dev/null || { cat reference-check.out; echo "the reference: not READY"; exit 1; }
+"$own" check-submission > reference-check.out 2> /dev/null || { cat reference-check.out; echo "the reference: not READY"; exit 1; }
 expect_not_checked reference-check.out
 grep -q '^READY, as far as this platform can check:' reference-check.out || { cat reference-check.out; echo "not READY"; exit 1; }
 for n in 1 2 3 4 5; do
