@@ -297,13 +297,13 @@ Report grade_visible(const CheckOptions& opt, const Manifest& manifest, const fs
 void print_not_checked() {
   if (sandbox_unavailable().empty()) return;
   std::fputs("Not checked on this platform (this pt-grade has no sandbox: it needs Linux); the grader checks each:\n"
-             "  - the sandbox: your tests ran here as plain processes, so code that forks, writes outside its\n"
+             "  - the sandbox: tests run here as plain processes, so code that forks, writes outside its\n"
              "    folder, or outgrows the grader's limits passes here and fails there;\n"
-             "  - the process boundary: here each part's tests and your task file ran in one process; the grader\n"
+             "  - the process boundary: here each part's tests and its task file run in one process; the grader\n"
              "    runs your task functions in a worker process of their own;\n"
              "  - pt-link-guard: what your task file's compiled code defines and calls;\n"
              "  - the hidden tests (as on every platform: the release does not have them).\n"
-             "READY below means ready as far as these checks go. For the grader's own checks: WSL, the dev\n"
+             "A READY here means ready as far as these checks go. For the grader's own checks: WSL, the dev\n"
              "container (.devcontainer/) or your course's GitHub Classroom run.\n\n",
              stdout);
 }

@@ -96,7 +96,7 @@ done
 # What check-submission says first without the sandbox, and in steps 4 and 5.
 expect_not_checked() {  # expect_not_checked FILE
   head -n 12 "$1" | grep -q '^Not checked on this platform (this pt-grade has no sandbox: it needs Linux); the grader checks each:' &&
-    grep -q '^  - the sandbox: your tests ran here as plain processes' "$1" &&
+    grep -q '^  - the sandbox: tests run here as plain processes' "$1" &&
     grep -q '^  - the process boundary: here each part' "$1" &&
     grep -q "^  - pt-link-guard: what your task file's compiled code defines and calls;" "$1" &&
     grep -q '^  - the hidden tests' "$1" ||
