@@ -2,6 +2,7 @@
 // death signal, and the process tree read from /proc. Built with the sandbox
 // (PT_SANDBOX); launcher_posix.cpp stands in for it elsewhere.
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/syscall.h>
@@ -29,6 +30,11 @@ bool Pipe::open() {
 Child::Child(const LaunchOptions& options, const std::function<void()>& body) {
   std::fflush(nullptr);  // what this process buffered must not come out twice
   const pid_t parent = ::getpid();
+  // The death signal follows the thread that forks; until the child has asked
+  // for it, that thread must not end (a starter thread that returns at once
+  // would leave a child that outlives everything). The child says so on a pipe.
+  int asked[2] = {-1, -1};
+  const bool confirm = options.parent_death_signal != 0 && ::pipe2(asked, O_CLOEXEC) == 0;
   // clone() with namespace flags: fork() cannot create them, and the child
   // must be the first process of its PID namespace.
   pid_ = options.namespaces == 0
@@ -39,11 +45,27 @@ Child::Child(const LaunchOptions& options, const std::function<void()>& body) {
       ::prctl(PR_SET_PDEATHSIG, options.parent_death_signal);
       // The parent died before the line above: the signal would never come.
       if (options.namespaces == 0 && ::getppid() != parent) ::_exit(128 + options.parent_death_signal);
+      if (confirm) {
+        const char byte = 1;
+        ::close(asked[0]);
+        while (::write(asked[1], &byte, 1) < 0 && errno == EINTR) {
+        }
+        ::close(asked[1]);
+      }
     }
     body();
     ::_exit(127);
   }
   if (pid_ < 0) error_ = errno;
+  if (confirm) {
+    ::close(asked[1]);
+    // A byte, not end of file: a process another thread forks meanwhile holds
+    // a copy of the write end. Bounded all the same, should the child die first.
+    pollfd ready{asked[0], POLLIN, 0};
+    char byte;
+    if (pid_ > 0 && ::poll(&ready, 1, 10000) > 0) (void)!::read(asked[0], &byte, 1);
+    ::close(asked[0]);
+  }
   for (int fd : options.child_ends)
     if (fd >= 0) ::close(fd);
 }

@@ -11,16 +11,14 @@
 
 #include "io/collada_loader.h"
 #include "pt_source_dir.h"
+#include "support/assertions.h"
 
 namespace pt {
 
 inline const std::filesystem::path kColladaData =
     std::filesystem::path(PT_SOURCE_DIR) / "tests" / "framework" / "data" / "collada";
 
-inline ::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using test::contains;
 
 // Warnings that contain `part`.
 inline size_t count_containing(const std::vector<std::string>& warnings, const std::string& part) {

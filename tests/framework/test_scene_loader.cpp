@@ -13,6 +13,7 @@
 #include "geometry/sphere.h"
 #include "io/scene_loader.h"
 #include "pt_source_dir.h"
+#include "support/assertions.h"
 
 namespace fs = std::filesystem;
 
@@ -31,10 +32,7 @@ int count_lights(const Scene& s) {
   return n;
 }
 
-::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using test::contains;
 
 // Each test writes its files into a directory of its own.
 class SceneFiles : public ::testing::Test {

@@ -12,8 +12,8 @@
 namespace pt {
 namespace {
 
-using test::p1::describe;
-using test::p1::TriangleSet;
+using test::part1::describe;
+using test::part1::TriangleSet;
 
 // Side of p from the plane through o, a, b.
 double side(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& p) {

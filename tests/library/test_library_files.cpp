@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/assertions.h"
 #include "support/reference_image.h"
 #include "support/scene_library.h"
 
@@ -19,10 +20,7 @@ namespace fs = std::filesystem;
 namespace pt::library {
 namespace {
 
-::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using test::contains;
 
 fs::path scratch(const std::string& what) {
   fs::path d = fs::temp_directory_path() / ("pt_library_" + std::to_string(getpid()) + "_" + what);

@@ -7,7 +7,7 @@
 
 #include "support/part1_builders.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 
 // Directions are unit vectors built from a handful of flops: 1e-12 leaves
 // room for any order of operations and still catches every real mistake.
@@ -108,4 +108,4 @@ inline std::string diagnose(const Camera& cam, double x, double y, const Ray& r)
   return os.str();
 }
 
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -10,7 +10,7 @@
 
 #include "support/part1_builders.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 
 // What an earlier hit on another primitive left in the record: no field of
 // it is what a hit on the primitive under test writes.
@@ -65,4 +65,4 @@ inline ::testing::AssertionResult miss_changes_nothing(const Primitive& prim, co
   return range_unchanged("intersect (a miss)", m, miss);
 }
 
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -9,7 +9,7 @@
 
 #include "support/part1_builders.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 
 // A ray with unit direction u whose closest approach to the sphere's centre
 // is the point c + h p (p a unit vector orthogonal to u), reached at t = D.
@@ -65,4 +65,4 @@ inline RandomSphereCase random_sphere_case(Rng& rng, bool random_range) {
   return {s, r};
 }
 
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

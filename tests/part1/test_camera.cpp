@@ -6,7 +6,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(CameraRay, CentreLooksAtTarget, "P1T1", 0.5, Visible) {
@@ -109,4 +109,4 @@ GRADED_TEST(CameraRay, OriginAndClipRange, "P1T1", 0.5, Visible) {
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -17,7 +17,7 @@
 #include "support/seed.h"
 #include "support/statistics.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 // An 8 x 6 image (not square, so that width and height cannot be mixed up)
@@ -325,4 +325,4 @@ GRADED_TEST_F(PixelSampling, EstimatesDrawFromTheRngPassedIn, "P1T2", 0.5, Visib
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -7,7 +7,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(SphereTest, RootsInOrder, "P1T4", 1, Visible) {
@@ -269,4 +269,4 @@ GRADED_TEST(SphereIntersect, HasIntersectionAgreesWithIntersect, "P1T4", 0.5, Vi
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

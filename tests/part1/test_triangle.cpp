@@ -7,7 +7,7 @@
 #include "support/seed.h"
 #include "triangle_cases.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(TriangleIntersect, HitDistanceAndPoint, "P1T3", 1, Visible) {
@@ -253,4 +253,4 @@ GRADED_TEST(TriangleIntersect, HasIntersectionAgreesWithIntersect, "P1T3", 0.5, 
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -10,7 +10,7 @@
 
 #include "support/part1_builders.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 
 // A triangle in general position with three different vertex normals.
 inline std::unique_ptr<TriangleSet> general_triangle() {
@@ -66,4 +66,4 @@ inline RandomTriangleCase random_triangle_case(Rng& rng, bool random_range) {
   return c;
 }
 
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -10,7 +10,7 @@
 
 #include "geometry/bbox.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 // Most cases use numbers that are exact in binary floating point, so that
 // division by d and multiplication by 1/d agree; 1e-12 only absorbs the last bit.
@@ -46,4 +46,4 @@ inline testing::AssertionResult slab(const BBox& box, const Ray& r, double t0, d
 
 inline Ray ray(const Vec3& o, const Vec3& d) { return Ray(o, d); }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

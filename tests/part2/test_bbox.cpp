@@ -4,7 +4,7 @@
 #include "slab_check.h"
 #include "support/graded.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 GRADED_TEST(BBoxSlab, HitsAndMisses, "P2T2", 1, Visible) {
@@ -138,4 +138,4 @@ GRADED_TEST(BBoxSlab, FlatBoxes, "P2T2", 1, Visible) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -5,9 +5,9 @@
 // tests/support/bvh_checks.h.
 #include <sstream>
 
-#include "part2_common.h"
+#include "common.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 // --- Structure -----------------------------------------------------------------
@@ -93,7 +93,7 @@ GRADED_TEST(BVHDegenerate, SinglePrimitiveAndEmptyScene, "P2T1", 0.5, Visible) {
 // --- Quality -----------------------------------------------------------------------
 //
 // SAH cost of the student's tree against the baseline's (expect_cost_within,
-// part2_common.h). Measured over seed offsets 0 to 10 (ranges over those
+// part2/common.h). Measured over seed offsets 0 to 10 (ranges over those
 // seeds; ratios to the baseline of the same scene):
 //
 //               baseline   3 axes + SAH at:        reference  longest axis only, at:        x axis
@@ -158,4 +158,4 @@ GRADED_TEST(BVHQuality, SahCostWithOneHugeTriangle, "P2T1", 0.5, Visible) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

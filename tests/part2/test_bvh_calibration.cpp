@@ -13,7 +13,7 @@
 #include "support/part2_scenes.h"
 #include "support/seed.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 void report(const Part2Scene& scene, const std::vector<Ray>& rays) {
@@ -89,4 +89,4 @@ TEST(Part2Calibration, DISABLED_PrintQualityNumbers) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

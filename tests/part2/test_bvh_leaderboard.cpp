@@ -10,10 +10,10 @@
 //   part2_tests --gtest_also_run_disabled_tests --gtest_filter='Part2Leaderboard.*'
 #include <cstdio>
 
-#include "part2_common.h"
+#include "common.h"
 #include "support/measure.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 void measure(const std::string& name, double value) {
@@ -45,4 +45,4 @@ TEST(Part2Leaderboard, DISABLED_Measure) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -8,9 +8,9 @@
 #include <iomanip>
 
 #include "core/rng.h"
-#include "part2_common.h"
+#include "common.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 GRADED_TEST(BVHCorrectness, ClosestHitMatchesLinearScanOnSoup, "P2T3", 2, Visible) {
@@ -324,4 +324,4 @@ GRADED_TEST(BVHCorrectness, DeepTreeManyDeferredSubtrees, "P2T3", 0.5, Visible) 
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

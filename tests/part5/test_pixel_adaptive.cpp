@@ -10,7 +10,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "part5_scripted.h"
+#include "scripted.h"
 #include "support/graded.h"
 #include "support/seed.h"
 

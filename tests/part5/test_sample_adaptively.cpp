@@ -20,7 +20,7 @@
 // expected stop miss the threshold by at least 1% (far beyond round-off).
 #include <cmath>
 
-#include "part5_scripted.h"
+#include "scripted.h"
 #include "support/graded.h"
 
 namespace pt {

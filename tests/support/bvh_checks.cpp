@@ -7,7 +7,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 // --- Flattening ---------------------------------------------------------------
 
@@ -463,4 +463,4 @@ testing::AssertionResult same_closest_hit(const Ray& ray, bool bvh_hit, const In
   return testing::AssertionSuccess();
 }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -81,7 +81,7 @@
 #include "geometry/bvh.h"
 #include "geometry/counted.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 constexpr double kCostTraversal = 1.0;
 constexpr double kCostIntersect = 1.0;
@@ -284,4 +284,4 @@ testing::AssertionResult same_closest_hit(const Ray& ray, bool bvh_hit, const In
 // One line describing a primitive (triangle vertices or sphere), for messages.
 std::string describe(const Primitive* p);
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -8,7 +8,7 @@
 #include "support/bvh_checks.h"
 #include "support/part2_baseline.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 [[noreturn]] void absent(const char* what) {
@@ -29,4 +29,4 @@ bool slab_closed(const BBox&, const Ray&, double&, double&) { absent("the framew
 
 bool framework_closest(const FlatTree&, const Ray&, Intersection*) { absent("the framework's ordered traversal"); }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -17,29 +17,13 @@
 #include "geometry/triangle.h"
 #include "scene/bsdf.h"
 #include "scene/camera.h"
+#include "support/assertions.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 
 // Hit distances, points and normals of O(1) geometry come from a few dozen
 // flops: 1e-9 is generous for any formulation and far below any real mistake.
 constexpr double kTol = 1e-9;
-
-// ---------------------------------------------------------------- vectors --
-
-// `what` = actual, within tol of expected in every component; on failure the
-// message names the quantity and shows both values.
-inline ::testing::AssertionResult VecNear(const char* what, const Vec3& actual, const Vec3& expected, double tol) {
-  if (is_finite(actual) && glm::all(glm::lessThanEqual(glm::abs(actual - expected), Vec3(tol))))
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << what << " is " << actual << ", expected " << expected << " (tolerance "
-                                       << tol << " per component)";
-}
-
-inline ::testing::AssertionResult Near(const char* what, double actual, double expected, double tol) {
-  if (std::abs(actual - expected) <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << what << " is " << actual << ", expected " << expected << " (tolerance "
-                                       << tol << ")";
-}
 
 // A string stream printing 15 significant digits: enough to reproduce a
 // failing input, few enough that 0.3 still prints as 0.3.
@@ -149,4 +133,4 @@ inline Roots closest_approach_roots(const Vec3& o, const Vec3& d, const Vec3& c,
   return {true, (D - s) / len, (D + s) / len, std::sqrt(h2)};
 }
 
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -23,11 +23,11 @@
 
 #include "support/bvh_checks.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 enum class SplitMethod { kMeanSAH, kMedianSAH, kMidpointSAH, kMidpointLongest, kMeanLongest, kObjectMedianLongest, kMidpointX };
 const char* method_name(SplitMethod m);
 
 FlatTree build_framework_bvh(std::vector<const Primitive*> prims, size_t max_leaf_size, SplitMethod method);
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -7,7 +7,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 namespace {
 
@@ -302,4 +302,4 @@ std::vector<Ray> make_layer_rays(const Part2Scene& scene, int n, uint64_t seed) 
   return rays;
 }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -10,7 +10,7 @@
 #include "geometry/mesh.h"
 #include "geometry/primitive.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 // Owns the meshes and primitives of a test scene. Loose triangles go into one
 // internal "soup" mesh (three vertices each); meshes keep their own vertices.
@@ -83,4 +83,4 @@ std::vector<Ray> make_rays(const Part2Scene& scene, int n, uint64_t seed);
 // by up to ~17 degrees), starting above or below the stack.
 std::vector<Ray> make_layer_rays(const Part2Scene& scene, int n, uint64_t seed);
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

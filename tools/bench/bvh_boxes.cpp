@@ -33,7 +33,7 @@
 #include "support/part2_baseline.h"
 
 using namespace pt;
-using namespace pt::test::p2;
+using namespace pt::test::part2;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(CameraRay, SensorIsAPlane, "P1T1", 0.5, Hidden) {
@@ -40,4 +40,4 @@ GRADED_TEST(CameraRay, PosedCameraMatchesLookAt, "P1T1", 1, Hidden) {
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -7,7 +7,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(SphereIntersect, TinyAndHugeSpheres, "P1T4", 0.5, Hidden) {
@@ -273,4 +273,4 @@ GRADED_TEST(SphereTest, OriginOnTheSphereHeadingIn, "P1T4", 0.5, Hidden) {
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

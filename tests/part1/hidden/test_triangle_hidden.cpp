@@ -7,7 +7,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p1 {
+namespace pt::test::part1 {
 namespace {
 
 GRADED_TEST(TriangleIntersect, SharedEdgeCannotSlipThrough, "P1T3", 0.5, Hidden) {
@@ -243,4 +243,4 @@ GRADED_TEST(TriangleIntersect, TinyHugeAndSliverTriangles, "P1T3", 0.5, Hidden) 
 }
 
 }  // namespace
-}  // namespace pt::test::p1
+}  // namespace pt::test::part1

@@ -11,7 +11,7 @@
 #include "support/graded.h"
 #include "support/seed.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 // Random boxes and rays against the framework's own slab test (closed box,
@@ -73,4 +73,4 @@ GRADED_TEST(BBoxSlab, NegativeZeroOnSlabPlane, "P2T2", 0.5, Hidden) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

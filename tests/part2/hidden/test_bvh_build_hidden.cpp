@@ -9,9 +9,9 @@
 #include <new>
 #include <string>
 
-#include "../part2_common.h"
+#include "../common.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 // An address-space limit of `extra` bytes beyond what the process maps now
@@ -109,7 +109,7 @@ GRADED_TEST(BVHDegenerate, HugeTriangleAmongTiny, "P2T1", 1, Hidden) {
   expect_agrees_with_linear_scan(bvh, prims, make_rays(s, 1000, seed(309)), s.name);
 }
 
-// SAH cost on the clustered scene (expect_cost_within, part2_common.h).
+// SAH cost on the clustered scene (expect_cost_within, part2/common.h).
 // Measured over seed offsets 0 to 10, ratios to the baseline's cost
 // (7.3-8.4): median + SAH 1.76-2.21, midpoint + SAH 0.79-0.91, reference
 // 0.83-1.00, longest-axis midpoint 0.77-0.94, mean 0.96-1.09, equal counts
@@ -159,4 +159,4 @@ GRADED_TEST(BVHQuality, WorkPerRayOnMesh, "P2T1", 1, Hidden) {
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

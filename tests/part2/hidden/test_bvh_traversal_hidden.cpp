@@ -1,8 +1,8 @@
 // Hidden P2T3 tests: any-hit work, limited ray intervals, and -0.0 direction
 // components along grid lines.
-#include "../part2_common.h"
+#include "../common.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 namespace {
 
 // Any-hit work. A traversal enters a leaf only if the ray enters its box and
@@ -196,4 +196,4 @@ GRADED_TEST(BVHCorrectness, NegativeZeroComponentsOnGridLines, "P2T3", 0.5, Hidd
 }
 
 }  // namespace
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

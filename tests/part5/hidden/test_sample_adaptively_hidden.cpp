@@ -2,7 +2,7 @@
 // variance, the Rec. 709 illuminance, a tolerance relative to the mean), on
 // scripted sequences whose exact stopping count is known (the closed form of
 // test_sample_adaptively.cpp: stop at the first checked n with n - 1 >= T).
-#include "../part5_scripted.h"
+#include "../scripted.h"
 #include "support/graded.h"
 
 namespace pt {

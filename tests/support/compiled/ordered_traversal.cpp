@@ -8,7 +8,7 @@
 
 #include "support/bvh_checks.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 bool slab_closed(const BBox& b, const Ray& r, double& t0, double& t1) {
   for (int a = 0; a < 3; ++a) {
@@ -66,4 +66,4 @@ bool framework_closest(const FlatTree& t, const Ray& r, Intersection* isect) {
   return hit;
 }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

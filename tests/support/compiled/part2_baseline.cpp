@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 const char* method_name(SplitMethod m) {
   switch (m) {
@@ -153,4 +153,4 @@ FlatTree build_framework_bvh(std::vector<const Primitive*> prims, size_t max_lea
   return Builder(std::move(prims), max_leaf_size, method).run();
 }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2

@@ -10,7 +10,7 @@
 #include "support/part2_scenes.h"
 #include "support/seed.h"
 
-namespace pt::test::p2 {
+namespace pt::test::part2 {
 
 // Depth bound for every Part 2 scene (up to ~21,000 primitives, leaves of 1
 // to 8). A balanced tree over 20,000 primitives has depth 13 to 15; the
@@ -123,4 +123,4 @@ inline void expect_cost_within(const Part2Scene& s, double factor) {
       << "; see bvh_checks.h for the cost's definition.)";
 }
 
-}  // namespace pt::test::p2
+}  // namespace pt::test::part2
