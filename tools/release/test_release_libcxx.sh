@@ -133,7 +133,8 @@ cp "$work"/part*.cpp tasks/
 
 echo "== 6. no libraries for this platform: the student's own parts, said, never a link error"
 mv "prebuilt/$platform" "$work/prebuilt-aside"
-cmake -S . -B build-none -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPT_SYSTEM_DEPS=OFF -DPT_SANDBOX=OFF \
+# (No pt-grade here: step 3 built it; this tree is about the libraries.)
+cmake -S . -B build-none -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPT_SYSTEM_DEPS=OFF -DPT_SANDBOX=OFF -DPT_GRADER=OFF \
   > none-configure.out 2>&1 || { cat none-configure.out; exit 1; }
 tr -s ' \n' ' ' < none-configure.out | grep -q "This release has no prebuilt solution for $platform" ||
   { cat none-configure.out; echo "configure did not warn"; exit 1; }
