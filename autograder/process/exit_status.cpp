@@ -25,6 +25,42 @@ const char* why(int sig) {
   }
 }
 
+// The signal's name as `kill -l` gives it. No C library call gives it on
+// every platform (glibc's sigabbrev_np is its own), and these are POSIX's.
+const char* abbreviation(int sig) {
+  switch (sig) {
+    case SIGHUP: return "HUP";
+    case SIGINT: return "INT";
+    case SIGQUIT: return "QUIT";
+    case SIGILL: return "ILL";
+    case SIGTRAP: return "TRAP";
+    case SIGABRT: return "ABRT";
+    case SIGBUS: return "BUS";
+    case SIGFPE: return "FPE";
+    case SIGKILL: return "KILL";
+    case SIGUSR1: return "USR1";
+    case SIGSEGV: return "SEGV";
+    case SIGUSR2: return "USR2";
+    case SIGPIPE: return "PIPE";
+    case SIGALRM: return "ALRM";
+    case SIGTERM: return "TERM";
+    case SIGCHLD: return "CHLD";
+    case SIGCONT: return "CONT";
+    case SIGSTOP: return "STOP";
+    case SIGTSTP: return "TSTP";
+    case SIGTTIN: return "TTIN";
+    case SIGTTOU: return "TTOU";
+    case SIGURG: return "URG";
+    case SIGXCPU: return "XCPU";
+    case SIGXFSZ: return "XFSZ";
+    case SIGVTALRM: return "VTALRM";
+    case SIGPROF: return "PROF";
+    case SIGWINCH: return "WINCH";
+    case SIGSYS: return "SYS";
+    default: return nullptr;
+  }
+}
+
 }  // namespace
 
 std::string Exit::describe() const {
@@ -33,7 +69,7 @@ std::string Exit::describe() const {
     case How::Exited:
       return "exited with status " + std::to_string(code);
     case How::Signaled: {
-      const char* abbrev = sigabbrev_np(code);
+      const char* abbrev = abbreviation(code);
       return "crashed: signal " + std::to_string(code) + (abbrev ? " (SIG" + std::string(abbrev) + ")" : "") + why(code);
     }
     case How::TimedOut:

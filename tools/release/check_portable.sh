@@ -9,7 +9,8 @@
 #     folder cannot be the test;
 #  2. the undefined symbols of every object it compiled (nm -u): none of the
 #     calls only Linux's C library has, which portable headers declare on
-#     glibc (pipe2, sched_setaffinity, getrandom, close_range, syscall, ...).
+#     glibc (pipe2, sched_setaffinity, getrandom, close_range, syscall, ...),
+#     nor glibc's own extensions named *_np (sigabbrev_np, pthread_setname_np).
 # The shipped third-party code (third_party/: GoogleTest's death tests clone()
 # on Linux, fork() elsewhere) chooses its own calls per platform: left out.
 # Usage: check_portable.sh BUILD_DIR
@@ -26,7 +27,7 @@ awk -v re="$linux_headers" '/^[^ ].*: #deps/ { obj = $1; sub(/:$/, "", obj); nex
 if [ -s "$out/portable-headers.out" ]; then
   cat "$out/portable-headers.out"; echo "a compile without the sandbox read a header only Linux has"; exit 1
 fi
-linux_calls='^(prctl|syscall|clone|clone3|unshare|setns|mount|umount2|pivot_root|pipe2|dup3|accept4|close_range|sched_setaffinity|sched_getaffinity|sched_getcpu|getrandom|memfd_create|execveat|pidfd_open|pidfd_send_signal|epoll_create1?|epoll_ctl|epoll_wait|signalfd|inotify_init1?|personality|prlimit(64)?|seccomp_.*|landlock_.*|__sched_cpucount|__sched_cpualloc)(@.*)?$'
+linux_calls='^(prctl|syscall|clone|clone3|unshare|setns|mount|umount2|pivot_root|pipe2|dup3|accept4|close_range|sched_setaffinity|sched_getaffinity|sched_getcpu|getrandom|memfd_create|execveat|pidfd_open|pidfd_send_signal|epoll_create1?|epoll_ctl|epoll_wait|signalfd|inotify_init1?|personality|prlimit(64)?|seccomp_.*|landlock_.*|__sched_cpucount|__sched_cpualloc|[a-z_]+_np)(@.*)?$'
 objects=$(awk '/^[^ ].*: #deps/ { sub(/:$/, "", $1); print $1 }' "$out/portable-deps.out" | grep -Ev 'pt_header_probe|third_party/' | sort -u)
 count=0
 : > "$out/portable-calls.out"

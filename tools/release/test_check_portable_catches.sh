@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # check_portable.sh can fail (ctest: release:portable-catches): a two-file
 # project built with Ninja, first with a source that includes <sys/prctl.h>,
-# then with one that calls pipe2() through <unistd.h>, each named; then with
-# neither, passed.
+# then with one that calls pipe2() through <unistd.h>, then glibc's own
+# sigabbrev_np() through <string.h>, each named; then with none, passed.
 # Usage: test_check_portable_catches.sh WORKDIR
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -28,5 +28,7 @@ cmake -S src -B build -G Ninja > configure.out 2>&1 || { cat configure.out; exit
 expect FAIL 'linux_header\.cpp\.o .*/sys/prctl\.h'
 echo 'int header() { return 0; }' > src/linux_header.cpp
 expect FAIL 'linux_call\.cpp\.o pipe2'
+printf '#include <string.h>\nconst char* call(int sig) { return sigabbrev_np(sig); }\n' > src/linux_call.cpp
+expect FAIL 'linux_call\.cpp\.o sigabbrev_np'
 echo 'int call(int*) { return 0; }' > src/linux_call.cpp
 expect PASS '^portable: 3 objects'
