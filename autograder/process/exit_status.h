@@ -1,6 +1,7 @@
 #pragma once
 // How a run of code under test ended, in words a student can act on.
 #include <string>
+#include <utility>
 
 namespace pt::grade {
 
@@ -11,6 +12,13 @@ struct Exit {
   double seconds = 0;  // wall-clock
   double limit = 0;    // the time limit it ran under (TimedOut)
   std::string error;   // why it did not start (NotStarted), or how it was lost (Lost)
+
+  // A run that never started, and why.
+  static Exit not_started(std::string why) {
+    Exit e;
+    e.error = std::move(why);
+    return e;
+  }
 
   bool exited_ok() const { return how == How::Exited && code == 0; }
   bool died() const { return how == How::Signaled || how == How::TimedOut || how == How::Lost; }

@@ -18,13 +18,6 @@
 namespace pt::grade {
 namespace {
 
-RunOutcome not_run(const std::string& why) {
-  RunOutcome r;
-  r.exit.how = Exit::How::NotStarted;
-  r.exit.error = why;
-  return r;
-}
-
 // The worker's run ends a second after its verifier's (the grader closes the
 // write end of `verifier_done`), or sooner, by itself: a worker that has
 // already died is seen dead, not stopped, and one still running reads the end
@@ -55,7 +48,7 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
                            RunOutcome& worker_run) {
   Pipe to_worker, from_worker, done, outcome;
   for (Pipe* p : {&to_worker, &from_worker, &done, &outcome})
-    if (!p->open()) return not_run(std::string("pipe: ") + std::strerror(errno));
+    if (!p->open()) return RunOutcome::not_started(std::string("pipe: ") + std::strerror(errno));
   // Both runs inherit the CPU at their clone: the helper's for the worker,
   // this thread's (restored after the run) for the verifier.
   cpu_set_t before;
@@ -75,7 +68,7 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
     ::_exit(0);
   });
   for (Fd* fd : {&to_worker.read, &from_worker.write, &done.read, &outcome.write}) fd->release();  // closed by the launch
-  if (!helper.started()) return not_run(std::string("fork: ") + std::strerror(helper.start_error()));
+  if (!helper.started()) return RunOutcome::not_started(std::string("fork: ") + std::strerror(helper.start_error()));
   request.args.push_back("--pt_worker_fds=5,6");
   request.link_read = from_worker.read.release();
   request.link_write = to_worker.write.release();

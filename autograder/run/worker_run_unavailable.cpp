@@ -9,11 +9,8 @@ namespace pt::grade {
 RunOutcome run_with_worker(Sandbox&, RunRequest request, RunObserver&, const std::string&, RunOutcome& worker_run) {
   for (int fd : {request.link_read, request.link_write})
     if (fd >= 0) Fd(fd).reset();
-  RunOutcome r;
-  r.exit.how = Exit::How::NotStarted;
-  r.exit.error = "the process boundary needs Linux: this pt-grade has no sandbox (PT_SANDBOX is off)";
-  worker_run = r;
-  return r;
+  worker_run = RunOutcome::not_started("the process boundary needs Linux: this pt-grade has no sandbox (PT_SANDBOX is off)");
+  return worker_run;
 }
 
 }  // namespace pt::grade

@@ -60,12 +60,6 @@ struct SpawnResult {
   int clone_errno = 0;            // clone() itself failed
 };
 
-Exit not_started(std::string why) {
-  Exit e;
-  e.error = std::move(why);
-  return e;
-}
-
 // The pipes of one run: the warden's status lines, the run's output and,
 // with a key, its verdict channel and the key it reads.
 struct RunPipes {
@@ -165,7 +159,7 @@ Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int w
     e.limit = timed_out->limit_seconds;
   } else if (!probe && !w.failures.empty()) {
     const Failure& f = w.failures.front();
-    e = not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
+    e = Exit::not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
   } else if (!w.reported) {
     e.how = Exit::How::Lost;
     e.error = "the sandbox's warden was killed" +
@@ -189,12 +183,12 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   SpawnResult r;
   RunPipes pipes;
   if (const std::string error = pipes.open(req.key); !error.empty()) {
-    r.outcome.exit = not_started(error);
+    r.outcome.exit = Exit::not_started(error);
     return r;
   }
   Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
   if (binary.get() < 0) {
-    r.outcome.exit = not_started(req.binary + ": " + std::strerror(errno));
+    r.outcome.exit = Exit::not_started(req.binary + ": " + std::strerror(errno));
     return r;
   }
   const WardenArgs args(plan, workdir, req, pipes, binary.get(), probe);
@@ -210,7 +204,7 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   Child warden(launch, [&args] { confine::warden_main(args.child); });
   if (!warden.started()) {
     r.clone_errno = warden.start_error();
-    r.outcome.exit = not_started(std::string("clone: ") + std::strerror(warden.start_error()));
+    r.outcome.exit = Exit::not_started(std::string("clone: ") + std::strerror(warden.start_error()));
     return r;
   }
   g_warden = warden.pid();
@@ -498,12 +492,12 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   const std::string workdir = scratch_ + "/run-" + std::to_string(::getpid()) + "-" + std::to_string(++runs_);
   if (::mkdir(workdir.c_str(), 0700) != 0) {
     RunOutcome r;
-    r.exit = not_started("cannot create " + workdir + ": " + std::strerror(errno));
+    r.exit = Exit::not_started("cannot create " + workdir + ": " + std::strerror(errno));
     return r;
   }
   if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid)) {
     RunOutcome r;
-    r.exit = not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
+    r.exit = Exit::not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
     return r;
   }
   RunRequest absolute = request;  // the child resolves paths from its own working directory
@@ -512,7 +506,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
     absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
     if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid)) {
       RunOutcome r;
-      r.exit = not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
+      r.exit = Exit::not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
       return r;
     }
   }

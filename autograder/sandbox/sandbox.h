@@ -89,6 +89,12 @@ struct RunOutcome {
   Exit exit;
   std::string output;         // stdout and stderr interleaved: the head, a gap marker, the tail
   uint64_t output_bytes = 0;  // all it wrote, kept or not
+
+  static RunOutcome not_started(std::string why) {
+    RunOutcome r;
+    r.exit = Exit::not_started(std::move(why));
+    return r;
+  }
 };
 
 // "" where this build confines code (PT_SANDBOX); otherwise why it cannot,

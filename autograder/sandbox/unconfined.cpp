@@ -89,17 +89,12 @@ void Sandbox::probe() {}
 
 RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   Fd link_read(request.link_read), link_write(request.link_write);  // never used here: closed
-  RunOutcome r;
   const std::string workdir = scratch_ + "/run-" + std::to_string(++runs_);
-  if (::mkdir(workdir.c_str(), 0700) != 0) {
-    r.exit.error = "cannot create " + workdir + ": " + std::strerror(errno);
-    return r;
-  }
+  if (::mkdir(workdir.c_str(), 0700) != 0)
+    return RunOutcome::not_started("cannot create " + workdir + ": " + std::strerror(errno));
   Pipe output, verdicts, key;
-  if (!output.open() || (!request.key.empty() && (!verdicts.open() || !key.open()))) {
-    r.exit.error = std::string("pipe: ") + std::strerror(errno);
-    return r;
-  }
+  if (!output.open() || (!request.key.empty() && (!verdicts.open() || !key.open())))
+    return RunOutcome::not_started(std::string("pipe: ") + std::strerror(errno));
   if (!request.key.empty()) {
     [[maybe_unused]] auto n = ::write(key.write.get(), request.key.data(), request.key.size());
     key.write.reset();  // the test main reads the key, then end of file
@@ -118,10 +113,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   launch.child_ends = {output.write.release(), verdicts.write.release(), key.read.release()};
   const int out_fd = launch.child_ends[0], verdicts_fd = launch.child_ends[1], key_fd = launch.child_ends[2];
   Child child(launch, [&] { exec_plain(out_fd, verdicts_fd, key_fd, workdir.c_str(), argv.data(), envp.data()); });
-  if (!child.started()) {
-    r.exit.error = std::string("fork: ") + std::strerror(child.start_error());
-    return r;
-  }
+  if (!child.started()) return RunOutcome::not_started(std::string("fork: ") + std::strerror(child.start_error()));
   OutputKeeper kept(options_.limits.output_head, options_.limits.output_tail);
   std::vector<Stream> streams{
       {output.read.get(), [&](const char* d, size_t n) { kept.add(d, n); }},
@@ -132,6 +124,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   child.kill(SIGKILL);        // a timeout; otherwise it has already gone
   const int status = child.wait();
   for (const Stream& s : streams) drain(s);
+  RunOutcome r;
   r.exit = exit_of(status, ended, deadline);
   r.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.output = kept.text();
