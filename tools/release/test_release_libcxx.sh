@@ -79,12 +79,17 @@ for cmd in "run" "submission tasks" "check-stubs --part 1 build/tests/part1_test
   grep -q "grading needs Linux's sandbox, which this build does not have (PT_SANDBOX is off): run it on your course's grader, in WSL or in the dev container" refused.out ||
     { cat refused.out; echo "pt-grade $cmd did not say why it refuses"; exit 1; }
 done
+# ldd's list read from a file: `ldd | grep -q` under pipefail fails when grep
+# stops reading first and ldd dies of SIGPIPE (seen: a binary that does link
+# libc++ called "not linked").
 for b in build/tests/part1_tests build/pathtracer; do
-  ldd "$b" | grep -q 'libc++\.so' || { ldd "$b"; echo "$b: not linked with libc++"; exit 1; }
-  ! ldd "$b" | grep -Eq 'libgtest|libtinyexr|libtinyobjloader|libstb' || { ldd "$b"; echo "$b: links a system library"; exit 1; }
+  ldd "$b" > ldd.out
+  grep -q 'libc++\.so' ldd.out || { cat ldd.out; echo "$b: not linked with libc++"; exit 1; }
+  ! grep -Eq 'libgtest|libtinyexr|libtinyobjloader|libstb' ldd.out || { cat ldd.out; echo "$b: links a system library"; exit 1; }
 done
 for n in 1 2 3 4 5; do
-  ! ldd "build/tests/part${n}_tests" | grep -q 'libstdc++' || { echo "part${n}_tests links libstdc++"; exit 1; }
+  ldd "build/tests/part${n}_tests" > ldd.out
+  ! grep -q 'libstdc++' ldd.out || { echo "part${n}_tests links libstdc++"; exit 1; }
 done
 
 echo "== 4. the stubs fail every visible graded test, naming its task"
