@@ -418,7 +418,8 @@ int main(int argc, char** argv) {
   std::string printed;
   pt::grade::CommandOptions keep_printed;
   keep_printed.max_output = 64u << 20;
-  const int status = kill_after > 0 ? run_command(command, nullptr, kill_after) : run_command(command, &printed, keep_printed);
+  keep_printed.kill_after = kill_after;
+  const int status = run_command(command, kill_after > 0 ? nullptr : &printed, keep_printed);
   if (!printed.empty()) std::printf("%s\n", printed.substr(0, 256u << 10).c_str());
   const uint64_t disk_peak = disk.finish();
   const std::string written = read_file(results_path);

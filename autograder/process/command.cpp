@@ -12,9 +12,7 @@
 
 namespace pt::grade {
 
-namespace {
-
-int run(const std::vector<std::string>& argv, std::string* output, double kill_after, const CommandOptions& options) {
+int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options) {
   if (argv.empty()) return -1;
   Pipe out;
   if (!out.open()) return -1;
@@ -45,8 +43,9 @@ int run(const std::vector<std::string>& argv, std::string* output, double kill_a
                                  if (output && output->size() < options.max_output)
                                    output->append(data, std::min(n, options.max_output - output->size()));
                                }}};
-  if (kill_after > 0 && !output) {
-    const auto end = start + std::chrono::duration_cast<Child::Clock::duration>(std::chrono::duration<double>(kill_after));
+  if (options.kill_after > 0) {
+    const auto end =
+        start + std::chrono::duration_cast<Child::Clock::duration>(std::chrono::duration<double>(options.kill_after));
     if (!child.watch(streams, -1, [end] { return end; })) child.kill(SIGKILL);
     return shell_status(child.wait());
   }
@@ -61,16 +60,6 @@ int run(const std::vector<std::string>& argv, std::string* output, double kill_a
     };
   child.watch(streams, 0, {}, tick);
   return shell_status(child.wait());
-}
-
-}  // namespace
-
-int run_command(const std::vector<std::string>& argv, std::string* output, double kill_after) {
-  return run(argv, output, kill_after, CommandOptions{});
-}
-
-int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options) {
-  return run(argv, output, 0, options);
 }
 
 void hide_command_line(int argc, char** argv, const char* name) {

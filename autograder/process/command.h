@@ -9,13 +9,6 @@
 
 namespace pt::grade {
 
-// Runs argv[0] (a path, or a name looked up in PATH) and appends its standard
-// output to *output when given (else it goes to standard error); standard
-// error passes through. With kill_after > 0 (and no output wanted) it is
-// killed with SIGKILL after that many seconds. Returns its exit status,
-// 128 + the signal when a signal ended it, or -1 when it could not start.
-int run_command(const std::vector<std::string>& argv, std::string* output, double kill_after = 0);
-
 struct CommandOptions {
   // Bytes of output kept; the rest is read and dropped, so that a program
   // that prints without end costs no memory.
@@ -29,11 +22,15 @@ struct CommandOptions {
   // Asked about every quarter second while the program runs; true sends its
   // process group SIGTERM: how a bound that no limit enforces is kept.
   std::function<bool()> stop_when;
+  // > 0: the program is killed with SIGKILL after that many seconds.
+  double kill_after = 0;
 };
 
-// The same with a bound on the output kept, a parent-death signal and a step
-// before exec.
-int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options);
+// Runs argv[0] (a path, or a name looked up in PATH) and appends its standard
+// output to *output when given (else it goes to standard error); standard
+// error passes through. Returns its exit status, 128 + the signal when a
+// signal ended it, or -1 when it could not start.
+int run_command(const std::vector<std::string>& argv, std::string* output, const CommandOptions& options = {});
 
 // Blanks this process's command line where the kernel reads it for
 // /proc/PID/cmdline, leaving `name`: the grader's names the results, the

@@ -1,5 +1,7 @@
 #include "process/exit_status.h"
 
+#include <sys/wait.h>
+
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -62,6 +64,13 @@ const char* abbreviation(int sig) {
 }
 
 }  // namespace
+
+Exit Exit::of_wait_status(int wait_status) {
+  Exit e;
+  e.how = WIFSIGNALED(wait_status) ? How::Signaled : How::Exited;
+  e.code = WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : WEXITSTATUS(wait_status);
+  return e;
+}
 
 std::string Exit::describe() const {
   char text[64];

@@ -19,6 +19,13 @@ struct Exit {
     e.error = std::move(why);
     return e;
   }
+  static Exit timed_out(double limit_seconds) {
+    Exit e;
+    e.how = How::TimedOut;
+    e.limit = limit_seconds;
+    return e;
+  }
+  static Exit of_wait_status(int wait_status);  // exited or signaled, as waitpid() said
 
   bool exited_ok() const { return how == How::Exited && code == 0; }
   bool died() const { return how == How::Signaled || how == How::TimedOut || how == How::Lost; }

@@ -120,23 +120,8 @@ std::string why_died(const Exit& e, const RunWatch& watch, const GradeLimits& li
 }  // namespace
 
 const char* TestResult::status_name() const {
-  switch (status) {
-    case Status::Passed:
-      return "passed";
-    case Status::Failed:
-      return "failed";
-    case Status::Skipped:
-      return "skipped";
-    case Status::Crashed:
-      return "crashed";
-    case Status::TimedOut:
-      return "timed-out";
-    case Status::NoVerdict:
-      return "no-verdict";
-    case Status::NotRun:
-      break;
-  }
-  return "not-run";
+  static const char* const names[] = {"passed", "failed", "skipped", "crashed", "timed-out", "no-verdict", "not-run"};
+  return names[static_cast<int>(status)];
 }
 
 double PartResult::earned() const {
@@ -186,10 +171,6 @@ std::vector<TestResult*> cheapest_tier(const std::vector<TestResult*>& tests, co
   }
   return tests;
 }
-
-}  // namespace
-
-namespace {
 
 // A folder for one run's images (ImageFolders), removed at the end of the
 // run's turn however it ends.
@@ -278,10 +259,11 @@ class PartGrading {
     return left;
   }
 
-  void charge_rest(TestResult::Status status, const std::string& why) {
+  void charge_rest(TestResult::Status status, const std::string& why, const std::string& output = "") {
     for (TestResult* t : unresolved()) {
       t->status = status;
       t->message = why;
+      t->output = output;
     }
   }
 
@@ -410,11 +392,7 @@ class PartGrading {
     if (e.worker_never_started) {
       const std::string why = "the worker running the task's code " + e.worker_run.exit.describe() +
                               " before its main started";
-      for (TestResult* t : unresolved()) {
-        t->status = TestResult::Status::NoVerdict;
-        t->message = "no verdict: " + why;
-        t->output = last_lines(e.worker_run.output);
-      }
+      charge_rest(TestResult::Status::NoVerdict, "no verdict: " + why, last_lines(e.worker_run.output));
       res_.notes.push_back(why + " (a static initializer?): every test of the part is charged with it");
       return false;
     }

@@ -36,7 +36,7 @@ struct GradeLimits {
 
 
 struct TestResult {
-  enum class Status { Passed, Failed, Skipped, Crashed, TimedOut, NoVerdict, NotRun };
+  enum class Status { Passed, Failed, Skipped, Crashed, TimedOut, NoVerdict, NotRun };  // status_name()'s order
   ManifestTest test;
   Status status = Status::NotRun;
   std::string message;  // GoogleTest's failure text, or why there is no verdict

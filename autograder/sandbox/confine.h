@@ -6,8 +6,8 @@
 // reports its exit status. The other process confines itself layer by layer
 // and executes the test binary.
 //
-// Both report on the status pipe, one line per step:
-//   ok STEP | fail STEP ERRNO WHAT | exit WAIT_STATUS
+// Both report on the status pipe, one line per failed step and one at the end:
+//   fail STEP ERRNO WHAT | exit WAIT_STATUS
 // In a probe (Sandbox's first run) a step that fails is reported and skipped;
 // in a real run it ends the run before any code under test starts.
 #include <sys/types.h>

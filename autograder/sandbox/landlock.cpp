@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 namespace pt::grade {
 namespace {
@@ -89,14 +90,12 @@ int landlock_ruleset(const LandlockRules& rules, int abi, std::string* error) {
   const uint64_t read = kReadFile | kReadDir;
   const uint64_t write = read | kWriteFile | kRemoveDir | kRemoveFile | kMakeDir | kMakeReg | kRefer | kTruncate;
   error->clear();
-  for (const auto& p : rules.read)
-    if (error->empty()) *error = add_rule(ruleset, p, read, attr.handled_access_fs);
-  for (const auto& p : rules.write)
-    if (error->empty()) *error = add_rule(ruleset, p, write, attr.handled_access_fs);
-  for (const auto& p : rules.execute)
-    if (error->empty()) *error = add_rule(ruleset, p, kExecute | kReadFile, attr.handled_access_fs);
-  for (const auto& p : rules.devices)
-    if (error->empty()) *error = add_rule(ruleset, p, kReadFile | kWriteFile | kTruncate, attr.handled_access_fs);
+  using Granted = std::pair<const std::vector<std::string>*, uint64_t>;
+  for (const auto& [paths, rights] : {Granted{&rules.read, read}, Granted{&rules.write, write},
+                                      Granted{&rules.execute, kExecute | kReadFile},
+                                      Granted{&rules.devices, kReadFile | kWriteFile | kTruncate}})
+    for (const auto& p : *paths)
+      if (error->empty()) *error = add_rule(ruleset, p, rights, attr.handled_access_fs);
   if (error->empty()) return ruleset;
   ::close(ruleset);
   return -1;

@@ -153,25 +153,17 @@ WardenReport read_status(const std::string& text) {
 // How the run ended: its deadline, a step of the sandbox that failed, a
 // warden killed before it could say, or the exit status it said.
 Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int warden_status) {
-  Exit e;
-  if (timed_out) {
-    e.how = Exit::How::TimedOut;
-    e.limit = timed_out->limit_seconds;
-  } else if (!probe && !w.failures.empty()) {
+  if (timed_out) return Exit::timed_out(timed_out->limit_seconds);
+  if (!probe && !w.failures.empty()) {
     const Failure& f = w.failures.front();
-    e = Exit::not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
-  } else if (!w.reported) {
-    e.how = Exit::How::Lost;
-    e.error = "the sandbox's warden was killed" +
-              (WIFSIGNALED(warden_status) ? " by signal " + std::to_string(WTERMSIG(warden_status)) : "") +
-              " before it could say how the run ended";
-  } else if (WIFSIGNALED(w.wait_status)) {
-    e.how = Exit::How::Signaled;
-    e.code = WTERMSIG(w.wait_status);
-  } else {
-    e.how = Exit::How::Exited;
-    e.code = WEXITSTATUS(w.wait_status);
+    return Exit::not_started(f.step == "exec" ? f.what : "the sandbox's step \"" + f.step + "\" failed: " + f.what);
   }
+  if (w.reported) return Exit::of_wait_status(w.wait_status);
+  Exit e;
+  e.how = Exit::How::Lost;
+  e.error = "the sandbox's warden was killed" +
+            (WIFSIGNALED(warden_status) ? " by signal " + std::to_string(WTERMSIG(warden_status)) : "") +
+            " before it could say how the run ended";
   return e;
 }
 
@@ -180,17 +172,10 @@ Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int w
 // passes, then every process of the run dead before this returns.
 SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
                   bool probe, Fd& link_read, Fd& link_write) {
-  SpawnResult r;
   RunPipes pipes;
-  if (const std::string error = pipes.open(req.key); !error.empty()) {
-    r.outcome.exit = Exit::not_started(error);
-    return r;
-  }
+  if (const std::string error = pipes.open(req.key); !error.empty()) return {RunOutcome::not_started(error), {}, 0};
   Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
-  if (binary.get() < 0) {
-    r.outcome.exit = Exit::not_started(req.binary + ": " + std::strerror(errno));
-    return r;
-  }
+  if (binary.get() < 0) return {RunOutcome::not_started(req.binary + ": " + std::strerror(errno)), {}, 0};
   const WardenArgs args(plan, workdir, req, pipes, binary.get(), probe);
   // Children the caller already had are not the run's: never killed.
   const std::set<pid_t> before = children_of(::getpid());
@@ -202,11 +187,9 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
                        pipes.key.read.release(),     binary.release(),             link_read.release(),
                        link_write.release()};
   Child warden(launch, [&args] { confine::warden_main(args.child); });
-  if (!warden.started()) {
-    r.clone_errno = warden.start_error();
-    r.outcome.exit = Exit::not_started(std::string("clone: ") + std::strerror(warden.start_error()));
-    return r;
-  }
+  if (!warden.started())
+    return {RunOutcome::not_started(std::string("clone: ") + std::strerror(warden.start_error())), {},
+            warden.start_error()};
   g_warden = warden.pid();
 
   const SandboxLimits& limits = plan.limits;
@@ -228,6 +211,7 @@ SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const R
   for (const Stream& s : streams) drain(s);
 
   const WardenReport report = read_status(status_text);
+  SpawnResult r;
   r.failures = report.failures;
   r.outcome.exit = exit_of(report, ended ? nullptr : &deadline, probe, warden_status);
   r.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -337,9 +321,8 @@ void offered_layers(confine::Plan& p, const SandboxOptions& options, LayerNotes&
   p.user_ns = ::geteuid() != 0;
   p.pid_ns = p.mount_ns = p.ipc_ns = p.tmpfs = p.proc = true;
   p.landlock_abi = landlock_abi();
-  p.seccomp = seccomp_available();
+  p.seccomp = true;
   if (p.landlock_abi == 0) notes.landlock = "Landlock: this kernel does not offer it";
-  if (!p.seccomp) notes.seccomp = "seccomp: pt-grade was built without libseccomp (libseccomp-dev)";
   if (!wanted(options, "namespaces")) {
     drop_namespaces(p);
     notes.namespaces = "namespaces" + kTurnedOff;
@@ -415,44 +398,45 @@ void keep_layers_that_work(confine::Plan& p, const std::string& scratch, const s
   }
 }
 
-// The layers in force, in words for the report.
-std::vector<std::string> describe_layers(const confine::Plan& p, const std::string& user) {
-  std::vector<std::string> active;
+// The layers in force: their ids (`pt-grade sandbox`, an expect.json's
+// `needs`) and, in words for the report, what each does ("" where it has no
+// line of its own).
+std::vector<std::pair<std::string, std::string>> layers_in_force(const confine::Plan& p, const std::string& user) {
   const SandboxLimits& l = p.limits;
-  if (p.pid_ns)
-    active.push_back("PID namespace: every process of a run dies with it");
-  else
-    active.push_back("child subreaper: whatever a run leaves behind is killed at its end");
-  if (p.user_ns) active.push_back("user namespace: no capability inside or out");
-  if (p.ipc_ns) active.push_back("IPC namespace: System V objects and POSIX message queues die with the run");
-  if (p.tmpfs) active.push_back("private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
-  if (!p.tmpfs) active.push_back("private working directory");
-  if (p.proc) active.push_back("private /proc: other processes are invisible");
-  if (p.switch_user) active.push_back("runs as " + user);
-  active.push_back("own session, no terminal");
+  std::vector<std::pair<std::string, std::string>> in;
+  auto add = [&in](bool holds, std::string id, std::string text) {
+    if (holds) in.emplace_back(std::move(id), std::move(text));
+  };
+  add(p.pid_ns, "pid-ns", "PID namespace: every process of a run dies with it");
+  add(!p.pid_ns, "subreaper", "child subreaper: whatever a run leaves behind is killed at its end");
+  add(p.user_ns, "user-ns", "user namespace: no capability inside or out");
+  add(p.ipc_ns, "ipc-ns", "IPC namespace: System V objects and POSIX message queues die with the run");
+  add(true, "workdir", p.tmpfs ? "" : "private working directory");
+  add(p.tmpfs, "tmpfs", "private tmpfs working directory (" + mebibytes(l.workdir_bytes) + ")");
+  add(p.proc, "proc", "private /proc: other processes are invisible");
+  add(p.switch_user, "user", "runs as " + user);
+  add(true, "session", "own session, no terminal");
   std::ostringstream limits;
   limits << "limits: address space " << mebibytes(l.address_space) << ", CPU " << l.cpu_seconds << " s, files "
          << mebibytes(l.file_size) << ", " << l.open_files << " open files";
   if (p.nproc) limits << ", " << l.processes << " processes and threads";
-  active.push_back(limits.str());
-  if (p.landlock_abi > 0)
-    active.push_back("Landlock ABI " + std::to_string(p.landlock_abi) +
-                     ": reads only the system and the given paths, writes only its working directory, executes only "
-                     "itself" +
-                     (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
-  if (p.seccomp)
-    active.push_back("seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; "
-                     "signals only to itself");
-  active.push_back("output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
-                   std::to_string(l.output_tail >> 10) + " KiB kept");
-  return active;
+  add(true, "rlimits", limits.str());
+  add(p.nproc, "nproc", "");
+  add(p.landlock_abi > 0, "landlock",
+      "Landlock ABI " + std::to_string(p.landlock_abi) +
+          ": reads only the system and the given paths, writes only its working directory, executes only itself" +
+          (p.landlock_abi >= 4 ? ", no TCP" : "") + (p.landlock_abi >= 6 ? ", no signals out" : ""));
+  add(p.seccomp, "seccomp",
+      "seccomp: an allowlist; no fork, exec, ptrace, sockets, System V IPC or message queues; signals only to itself");
+  add(p.seccomp || p.nproc, "no-fork", "");
+  add(true, "", "output through a pipe: the first " + std::to_string(l.output_head >> 10) + " KiB and the last " +
+                    std::to_string(l.output_tail >> 10) + " KiB kept");
+  return in;
 }
 
 }  // namespace
 
 void Sandbox::probe() {
-  active_.clear();
-  missing_.clear();
   if (!options_.confine) {
     active_.push_back("none but limits, its own session and a child subreaper (--no-sandbox)");
     return;
@@ -462,27 +446,14 @@ void Sandbox::probe() {
   choose_user(p, options_, notes);
   offered_layers(p, options_, notes);
   keep_layers_that_work(p, scratch_, options_.user, notes);
-  active_ = describe_layers(p, options_.user);
+  for (const auto& [id, text] : layers_in_force(p, options_.user)) {
+    if (!id.empty()) ids_.push_back(id);
+    if (!text.empty()) active_.push_back(text);
+  }
   for (const std::string* note : {&notes.namespaces, &notes.tmpfs, &notes.proc, &notes.user, &notes.landlock,
                                   &notes.seccomp})
     if (!note->empty()) missing_.push_back(*note);
   if (!p.nproc && !p.seccomp) missing_.push_back("process limit: nothing stops a fork bomb but the time limits");
-}
-
-std::vector<std::string> Sandbox::layer_ids() const {
-  const Plan& p = *plan_;
-  if (!options_.confine) return {};
-  std::vector<std::string> ids{p.pid_ns ? "pid-ns" : "subreaper", "session", "rlimits", "workdir"};
-  if (p.user_ns) ids.push_back("user-ns");
-  if (p.ipc_ns) ids.push_back("ipc-ns");
-  if (p.tmpfs) ids.push_back("tmpfs");
-  if (p.proc) ids.push_back("proc");
-  if (p.switch_user) ids.push_back("user");
-  if (p.nproc) ids.push_back("nproc");
-  if (p.landlock_abi > 0) ids.push_back("landlock");
-  if (p.seccomp) ids.push_back("seccomp");
-  if (p.seccomp || p.nproc) ids.push_back("no-fork");
-  return ids;
 }
 
 RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
@@ -490,25 +461,17 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   // The process id too: a verifier's worker is run by a helper process with
   // a copy of this Sandbox (grade_part.cpp).
   const std::string workdir = scratch_ + "/run-" + std::to_string(::getpid()) + "-" + std::to_string(++runs_);
-  if (::mkdir(workdir.c_str(), 0700) != 0) {
-    RunOutcome r;
-    r.exit = Exit::not_started("cannot create " + workdir + ": " + std::strerror(errno));
-    return r;
-  }
-  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid)) {
-    RunOutcome r;
-    r.exit = Exit::not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
-    return r;
-  }
+  if (::mkdir(workdir.c_str(), 0700) != 0)
+    return RunOutcome::not_started("cannot create " + workdir + ": " + std::strerror(errno));
+  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid))
+    return RunOutcome::not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
   RunRequest absolute = request;  // the child resolves paths from its own working directory
   absolute.binary = fs::absolute(request.binary).lexically_normal().string();
   if (!request.output_dir.empty()) {
     absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
-    if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid)) {
-      RunOutcome r;
-      r.exit = Exit::not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno));
-      return r;
-    }
+    if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid))
+      return RunOutcome::not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " +
+                                     std::strerror(errno));
   }
   SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write);
   std::error_code ec;

@@ -116,7 +116,7 @@ class Sandbox {
 
   const std::vector<std::string>& layers() const { return active_; }  // e.g. "PID namespace"
   const std::vector<std::string>& layers_missing() const { return missing_; }
-  std::vector<std::string> layer_ids() const;  // pid-ns, user, landlock, seccomp, no-fork, ...
+  const std::vector<std::string>& layer_ids() const { return ids_; }  // pid-ns, user, landlock, seccomp, no-fork, ...
 
  private:
   struct Plan;
@@ -125,7 +125,7 @@ class Sandbox {
   SandboxOptions options_;
   std::string scratch_;  // the grader's own temporary folder
   Plan* plan_;
-  std::vector<std::string> active_, missing_;
+  std::vector<std::string> active_, missing_, ids_;
   int runs_ = 0;
 };
 

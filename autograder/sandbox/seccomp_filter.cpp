@@ -1,10 +1,8 @@
 #include "sandbox/seccomp_filter.h"
 
-#ifdef PT_HAVE_SECCOMP
 #include <fcntl.h>
 #include <sched.h>
 #include <seccomp.h>
-#endif
 
 #include <cerrno>
 #include <cstdint>
@@ -12,13 +10,6 @@
 #include <initializer_list>
 
 namespace pt::grade {
-
-#ifndef PT_HAVE_SECCOMP
-
-bool seccomp_available() { return false; }
-std::string seccomp_confine(int, pid_t) { return "pt-grade was built without libseccomp"; }
-
-#else
 
 namespace {
 
@@ -56,8 +47,6 @@ constexpr const char* kRefused[] = {
     "request_key", "tkill", "pidfd_open", "pidfd_send_signal", "pidfd_getfd"};
 
 }  // namespace
-
-bool seccomp_available() { return true; }
 
 std::string seccomp_confine(int exec_fd, pid_t self) {
   scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ERRNO(ENOSYS));
@@ -110,7 +99,5 @@ std::string seccomp_confine(int exec_fd, pid_t self) {
   seccomp_release(ctx);
   return rc == 0 ? "" : std::string("seccomp: ") + std::strerror(-rc);
 }
-
-#endif
 
 }  // namespace pt::grade

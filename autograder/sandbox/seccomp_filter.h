@@ -16,9 +16,6 @@
 
 namespace pt::grade {
 
-// False when pt-grade was built without libseccomp.
-bool seccomp_available();
-
 // The one exec the filter allows: execveat(exec_fd, "", argv, envp,
 // AT_EMPTY_PATH) with exec_fd above the open-files limit the code under test
 // runs with, so that it can never open a descriptor with that number itself.

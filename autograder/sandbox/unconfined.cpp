@@ -47,21 +47,6 @@ namespace fs = std::filesystem;
   ::_exit(127);
 }
 
-Exit exit_of(int status, bool ended, const Deadline& deadline) {
-  Exit e;
-  if (!ended) {
-    e.how = Exit::How::TimedOut;
-    e.limit = deadline.limit_seconds;
-  } else if (WIFSIGNALED(status)) {
-    e.how = Exit::How::Signaled;
-    e.code = WTERMSIG(status);
-  } else {
-    e.how = Exit::How::Exited;
-    e.code = WEXITSTATUS(status);
-  }
-  return e;
-}
-
 }  // namespace
 
 std::string sandbox_unavailable() {
@@ -74,6 +59,7 @@ Sandbox::Sandbox(SandboxOptions options) : options_(std::move(options)), plan_(n
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/pt-grade-XXXXXX";
   if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder in " + pattern);
   scratch_ = fs::canonical(pattern).string();
+  ids_ = {"none"};
   missing_ = {"the sandbox: this build has none (PT_SANDBOX is off: it needs Linux); tests run as plain processes"};
 }
 
@@ -82,8 +68,6 @@ Sandbox::~Sandbox() {
   fs::remove_all(scratch_, ec);
   delete plan_;
 }
-
-std::vector<std::string> Sandbox::layer_ids() const { return {"none"}; }
 
 void Sandbox::probe() {}
 
@@ -125,7 +109,7 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   const int status = child.wait();
   for (const Stream& s : streams) drain(s);
   RunOutcome r;
-  r.exit = exit_of(status, ended, deadline);
+  r.exit = ended ? Exit::of_wait_status(status) : Exit::timed_out(deadline.limit_seconds);
   r.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.output = kept.text();
   r.output_bytes = kept.total();
