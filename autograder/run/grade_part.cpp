@@ -17,7 +17,6 @@
 #include "boundary/verifier_exit_codes.h"
 #include "process/launcher.h"
 #include "report/report_text.h"
-#include "run/run_outcome.h"
 #include "run/verdicts.h"
 
 namespace pt::grade {

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -34,12 +35,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The warden of the run in progress, for the interrupt handler: a grader
-// stopped with Ctrl-C or SIGTERM takes the run with it.
-volatile sig_atomic_t g_warden = 0;
+// The wardens of the runs in progress (a verifier's and its worker's), for
+// the interrupt handler: a grader stopped with Ctrl-C or SIGTERM takes the
+// runs with it.
+volatile sig_atomic_t g_wardens[2] = {0, 0};
 
 void kill_run_and_die(int sig) {
-  if (g_warden > 0) ::kill(g_warden, SIGKILL);
+  for (const sig_atomic_t warden : g_wardens)
+    if (warden > 0) ::kill(warden, SIGKILL);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -167,57 +170,107 @@ Exit exit_of(const WardenReport& w, const Deadline* timed_out, bool probe, int w
   return e;
 }
 
-// One run: the warden started in the run's namespaces (confine.h), its
-// output and verdicts read until it reports or the observer's deadline
-// passes, then every process of the run dead before this returns.
-SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
-                  bool probe, Fd& link_read, Fd& link_write) {
+// One run in flight: its warden started in the run's namespaces
+// (confine.h), its output, verdicts and status read into it by a watch.
+// Never moved: the warden and the streams point into it.
+struct Flight {
+  explicit Flight(const SandboxLimits& l) : kept(l.output_head, l.output_tail) {}
+
   RunPipes pipes;
-  if (const std::string error = pipes.open(req.key); !error.empty()) return {RunOutcome::not_started(error), {}, 0};
+  std::optional<WardenArgs> args;
+  std::optional<Child> warden;
+  OutputKeeper kept;
+  std::string status_text;
+  std::vector<Stream> streams;  // output, verdicts, status
+  Clock::time_point start = Clock::now();
+  int warden_status = 0;
+  SpawnResult result;  // why it never started, or how it ended (land())
+};
+
+// Starts the run; false, with f.result saying why, when it could not.
+bool take_off(Flight& f, const confine::Plan& plan, const std::string& workdir, const RunRequest& req,
+              RunObserver& observer, bool probe, Fd& link_read, Fd& link_write) {
+  if (const std::string error = f.pipes.open(req.key); !error.empty()) {
+    f.result.outcome = RunOutcome::not_started(error);
+    return false;
+  }
   Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
-  if (binary.get() < 0) return {RunOutcome::not_started(req.binary + ": " + std::strerror(errno)), {}, 0};
-  const WardenArgs args(plan, workdir, req, pipes, binary.get(), probe);
-  // Children the caller already had are not the run's: never killed.
-  const std::set<pid_t> before = children_of(::getpid());
-  const auto start = Clock::now();
+  if (binary.get() < 0) {
+    f.result.outcome = RunOutcome::not_started(req.binary + ": " + std::strerror(errno));
+    return false;
+  }
+  f.args.emplace(plan, workdir, req, f.pipes, binary.get(), probe);
   LaunchOptions launch;
   launch.namespaces = namespace_flags(plan);
   // The child has its own: the peer sees the end of the link when this run ends.
-  launch.child_ends = {pipes.status.write.release(), pipes.output.write.release(), pipes.verdicts.write.release(),
-                       pipes.key.read.release(),     binary.release(),             link_read.release(),
+  RunPipes& p = f.pipes;
+  launch.child_ends = {p.status.write.release(), p.output.write.release(), p.verdicts.write.release(),
+                       p.key.read.release(),     binary.release(),         link_read.release(),
                        link_write.release()};
-  Child warden(launch, [&args] { confine::warden_main(args.child); });
-  if (!warden.started())
-    return {RunOutcome::not_started(std::string("clone: ") + std::strerror(warden.start_error())), {},
-            warden.start_error()};
-  g_warden = warden.pid();
+  const confine::ChildArgs& child = f.args->child;
+  f.warden.emplace(launch, [&child] { confine::warden_main(child); });
+  if (!f.warden->started()) {
+    f.result.clone_errno = f.warden->start_error();
+    f.result.outcome = RunOutcome::not_started(std::string("clone: ") + std::strerror(f.result.clone_errno));
+    return false;
+  }
+  for (auto& slot : g_wardens)
+    if (slot == 0) {
+      slot = f.warden->pid();
+      break;
+    }
+  f.streams = {{p.output.read.get(), [&f](const char* d, size_t n) { f.kept.add(d, n); }},
+               {p.verdicts.read.get(), [&observer](const char* d, size_t n) { observer.on_channel({d, n}); }},
+               {p.status.read.get(), [&f](const char* d, size_t n) {
+                  if (f.status_text.size() < 65536) f.status_text.append(d, n);
+                }}};
+  return true;
+}
 
-  const SandboxLimits& limits = plan.limits;
-  OutputKeeper kept(limits.output_head, limits.output_tail);
-  std::string status_text;
-  std::vector<Stream> streams{
-      {pipes.output.read.get(), [&](const char* d, size_t n) { kept.add(d, n); }},
-      {pipes.verdicts.read.get(), [&](const char* d, size_t n) { observer.on_channel(std::string_view(d, n)); }},
-      {pipes.status.read.get(), [&](const char* d, size_t n) {
-         if (status_text.size() < 65536) status_text.append(d, n);
-       }}};
+// Its warden killed (a timeout; otherwise it has already gone) and reaped.
+void stop(Flight& f) {
+  for (auto& slot : g_wardens)
+    if (slot == f.warden->pid()) slot = 0;
+  f.warden->kill(SIGKILL);
+  f.warden_status = f.warden->wait();
+}
+
+// How the run ended, once every process of it is dead.
+void land(Flight& f, const Deadline* timed_out, bool probe) {
+  for (const Stream& s : f.streams) drain(s);
+  const WardenReport report = read_status(f.status_text);
+  f.result.failures = report.failures;
+  f.result.outcome.exit = exit_of(report, timed_out, probe, f.warden_status);
+  f.result.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - f.start).count();
+  f.result.outcome.output = f.kept.text();
+  f.result.outcome.output_bytes = f.kept.total();
+}
+
+// Watches a run started (and a worker started before it, beside) until its
+// warden reports or the observer's deadline passes; the worker then has a
+// second more to read the end of its link and leave. Every process of both is
+// dead when this returns; `before` are the caller's own children, never killed.
+void fly(const confine::Plan& plan, Flight& f, RunObserver& observer, bool probe, Flight* beside,
+         const std::set<pid_t>& before) {
+  std::vector<Stream> streams = f.streams;
+  if (beside) streams.insert(streams.end(), beside->streams.begin(), beside->streams.end());
   Deadline deadline{};
-  const bool ended = warden.watch(streams, 2, [&] { return (deadline = observer.deadline()).when; });
-  warden.kill(SIGKILL);  // a timeout; otherwise it has already gone
-  const int warden_status = warden.wait();
-  g_warden = 0;
-  // Without a PID namespace, whatever the killed warden left is handed here.
-  if (!plan.pid_ns) kill_descendants(before);
-  for (const Stream& s : streams) drain(s);
+  const bool ended = f.warden->watch(streams, 2, [&] { return (deadline = observer.deadline()).when; });
+  stop(f);
+  const Deadline beside_end{Clock::now() + std::chrono::seconds(1), 0};
+  const bool beside_ended = beside && beside->warden->watch(beside->streams, 2, [&] { return beside_end.when; });
+  if (beside) stop(*beside);
+  if (!plan.pid_ns) kill_descendants(before);  // what the killed wardens left is handed here
+  if (beside) land(*beside, beside_ended ? nullptr : &beside_end, probe);
+  land(f, ended ? nullptr : &deadline, probe);
+}
 
-  const WardenReport report = read_status(status_text);
-  SpawnResult r;
-  r.failures = report.failures;
-  r.outcome.exit = exit_of(report, ended ? nullptr : &deadline, probe, warden_status);
-  r.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.outcome.output = kept.text();
-  r.outcome.output_bytes = kept.total();
-  return r;
+SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
+                  bool probe, Fd& link_read, Fd& link_write) {
+  const std::set<pid_t> before = children_of(::getpid());
+  Flight f(plan.limits);
+  if (take_off(f, plan, workdir, req, observer, probe, link_read, link_write)) fly(plan, f, observer, probe, nullptr, before);
+  return f.result;
 }
 
 class FixedDeadline : public RunObserver {
@@ -456,27 +509,61 @@ void Sandbox::probe() {
   if (!p.nproc && !p.seccomp) missing_.push_back("process limit: nothing stops a fork bomb but the time limits");
 }
 
+std::string Sandbox::prepare(const RunRequest& request, RunRequest& absolute, std::string& workdir) {
+  workdir = scratch_ + "/run-" + std::to_string(++runs_);
+  if (::mkdir(workdir.c_str(), 0700) != 0) return "cannot create " + workdir + ": " + std::strerror(errno);
+  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid))
+    return "cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno);
+  absolute = request;  // the child resolves paths from its own working directory
+  absolute.binary = fs::absolute(request.binary).lexically_normal().string();
+  if (request.output_dir.empty()) return "";
+  absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
+  if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid))
+    return "cannot hand " + absolute.output_dir + " to " + options_.user + ": " + std::strerror(errno);
+  return "";
+}
+
 RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
   Fd link_read(request.link_read), link_write(request.link_write);  // the run's, whatever happens
-  // The process id too: a verifier's worker is run by a helper process with
-  // a copy of this Sandbox (grade_part.cpp).
-  const std::string workdir = scratch_ + "/run-" + std::to_string(::getpid()) + "-" + std::to_string(++runs_);
-  if (::mkdir(workdir.c_str(), 0700) != 0)
-    return RunOutcome::not_started("cannot create " + workdir + ": " + std::strerror(errno));
-  if (plan_->switch_user && !plan_->tmpfs && !hand_over(workdir, plan_->uid, plan_->gid))
-    return RunOutcome::not_started("cannot hand " + workdir + " to " + options_.user + ": " + std::strerror(errno));
-  RunRequest absolute = request;  // the child resolves paths from its own working directory
-  absolute.binary = fs::absolute(request.binary).lexically_normal().string();
-  if (!request.output_dir.empty()) {
-    absolute.output_dir = fs::absolute(request.output_dir).lexically_normal().string();
-    if (plan_->switch_user && !hand_over(absolute.output_dir, plan_->uid, plan_->gid))
-      return RunOutcome::not_started("cannot hand " + absolute.output_dir + " to " + options_.user + ": " +
-                                     std::strerror(errno));
-  }
-  SpawnResult r = spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write);
+  RunRequest absolute;
+  std::string workdir;
+  const std::string error = prepare(request, absolute, workdir);
+  SpawnResult r = error.empty() ? spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write)
+                                : SpawnResult{RunOutcome::not_started(error), {}, 0};
   std::error_code ec;
   fs::remove_all(workdir, ec);
   return std::move(r.outcome);
+}
+
+RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer, const RunRequest& worker,
+                        RunOutcome& worker_run) {
+  Fd links[] = {Fd(request.link_read), Fd(request.link_write), Fd(worker.link_read), Fd(worker.link_write)};
+  RunRequest absolute[2];
+  std::string workdirs[2];
+  const std::string errors[2] = {prepare(worker, absolute[0], workdirs[0]), prepare(request, absolute[1], workdirs[1])};
+  const std::set<pid_t> before = children_of(::getpid());
+  Flight w(plan_->limits), v(plan_->limits);
+  const bool worker_started =
+      errors[0].empty() && take_off(w, *plan_, workdirs[0], absolute[0], observer, false, links[2], links[3]);
+  if (!errors[0].empty()) w.result.outcome = RunOutcome::not_started(errors[0]);
+  links[2].reset();  // a worker that never started: its verifier sees the end of its link
+  links[3].reset();
+  const bool started =
+      errors[1].empty() && take_off(v, *plan_, workdirs[1], absolute[1], observer, false, links[0], links[1]);
+  if (!errors[1].empty()) v.result.outcome = RunOutcome::not_started(errors[1]);
+  links[0].reset();  // a verifier that never started: its worker sees the end of its link
+  links[1].reset();
+  FixedDeadline one_second(1);
+  if (started)
+    fly(*plan_, v, observer, false, worker_started ? &w : nullptr, before);
+  else if (worker_started)
+    fly(*plan_, w, one_second, false, nullptr, before);
+  for (const std::string& dir : workdirs) {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  worker_run = std::move(w.result.outcome);
+  return std::move(v.result.outcome);
 }
 
 }  // namespace pt::grade

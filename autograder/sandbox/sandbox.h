@@ -113,6 +113,11 @@ class Sandbox {
   // a PID namespace, the run's orphans are handed to it and killed; children
   // it had before the run are left alone.)
   RunOutcome run(const RunRequest& request, RunObserver& observer);
+  // The same for a verifier (`request`) with its worker beside it, each in a
+  // run of its own (its own PID namespace where there are namespaces), both
+  // started from this thread: the worker's output is read while the verifier
+  // runs, and the worker is stopped a second after the verifier has ended.
+  RunOutcome run(const RunRequest& request, RunObserver& observer, const RunRequest& worker, RunOutcome& worker_run);
 
   const std::vector<std::string>& layers() const { return active_; }  // e.g. "PID namespace"
   const std::vector<std::string>& layers_missing() const { return missing_; }
@@ -121,6 +126,8 @@ class Sandbox {
  private:
   struct Plan;
   void probe();
+  // A run's working directory made and handed over, its paths absolute: "" or what failed.
+  std::string prepare(const RunRequest& request, RunRequest& absolute, std::string& workdir);
 
   SandboxOptions options_;
   std::string scratch_;  // the grader's own temporary folder
