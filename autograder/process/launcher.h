@@ -1,7 +1,7 @@
 #pragma once
-// Starting a process and seeing it end: the one place the grader, its helper
-// processes and a verifier start one (command.h, sandbox/sandbox.cpp and
-// sandbox/confine.cpp, run/grade_part.cpp, boundary/verifier_link.cpp). This is
+// Starting a process and seeing it end: the one place the grader and a
+// verifier start one (command.h, sandbox/sandbox.cpp and sandbox/confine.cpp,
+// sandbox/unconfined.cpp, boundary/verifier_link.cpp). This is
 // the parent's side only; what a child does between its start and exec (the
 // sandbox's namespaces, limits, Landlock, seccomp: sandbox/confine.h) is the
 // body it is given.

@@ -29,7 +29,7 @@ RunOutcome run_with_worker(Sandbox& sandbox, RunRequest request, RunObserver& wa
   const bool restore = ::sched_getaffinity(0, sizeof before, &before) == 0;
   const std::optional<cpu_set_t> cpu = boundary::one_cpu();
   if (cpu) ::sched_setaffinity(0, sizeof *cpu, &*cpu);
-  RunOutcome run = sandbox.run(request, watch, w, worker_run);
+  RunOutcome run = sandbox.run(request, watch, &w, &worker_run);
   if (cpu && restore) ::sched_setaffinity(0, sizeof before, &before);
   return run;
 }

@@ -57,12 +57,6 @@ struct Failure {
   int err = 0;
 };
 
-struct SpawnResult {
-  RunOutcome outcome;
-  std::vector<Failure> failures;  // steps that failed (a probe carries on past optional ones)
-  int clone_errno = 0;            // clone() itself failed
-};
-
 // The pipes of one run: the warden's status lines, the run's output and,
 // with a key, its verdict channel and the key it reads.
 struct RunPipes {
@@ -95,15 +89,11 @@ struct WardenArgs {
     a.probe = probe;
     a.status = pipes.status.write.get();
     a.output = pipes.output.write.get();
-    a.verdicts = pipes.verdicts.write.get();
-    a.key = pipes.key.read.get();
-    if (req.key.empty()) {  // a worker: its link where a verdict channel would be
-      a.verdicts = req.link_write;
-      a.key = req.link_read;
-    } else {
-      a.link_read = req.link_read;
-      a.link_write = req.link_write;
-    }
+    const bool worker = req.key.empty();  // its link where a verdict channel would be
+    a.verdicts = worker ? req.link_write : pipes.verdicts.write.get();
+    a.key = worker ? req.link_read : pipes.key.read.get();
+    a.link_read = worker ? -1 : req.link_read;
+    a.link_write = worker ? -1 : req.link_write;
     a.binary = binary;
     a.binary_path = req.binary;
     a.workdir = workdir;
@@ -184,19 +174,21 @@ struct Flight {
   std::vector<Stream> streams;  // output, verdicts, status
   Clock::time_point start = Clock::now();
   int warden_status = 0;
-  SpawnResult result;  // why it never started, or how it ended (land())
+  RunOutcome outcome;             // why it never started, or how it ended (land())
+  std::vector<Failure> failures;  // steps that failed (a probe carries on past optional ones)
+  int clone_errno = 0;            // clone() itself failed
 };
 
-// Starts the run; false, with f.result saying why, when it could not.
+// Starts the run; false, with f.outcome saying why, when it could not.
 bool take_off(Flight& f, const confine::Plan& plan, const std::string& workdir, const RunRequest& req,
               RunObserver& observer, bool probe, Fd& link_read, Fd& link_write) {
   if (const std::string error = f.pipes.open(req.key); !error.empty()) {
-    f.result.outcome = RunOutcome::not_started(error);
+    f.outcome = RunOutcome::not_started(error);
     return false;
   }
   Fd binary(::open(req.binary.c_str(), O_PATH | O_CLOEXEC));
   if (binary.get() < 0) {
-    f.result.outcome = RunOutcome::not_started(req.binary + ": " + std::strerror(errno));
+    f.outcome = RunOutcome::not_started(req.binary + ": " + std::strerror(errno));
     return false;
   }
   f.args.emplace(plan, workdir, req, f.pipes, binary.get(), probe);
@@ -210,8 +202,8 @@ bool take_off(Flight& f, const confine::Plan& plan, const std::string& workdir, 
   const confine::ChildArgs& child = f.args->child;
   f.warden.emplace(launch, [&child] { confine::warden_main(child); });
   if (!f.warden->started()) {
-    f.result.clone_errno = f.warden->start_error();
-    f.result.outcome = RunOutcome::not_started(std::string("clone: ") + std::strerror(f.result.clone_errno));
+    f.clone_errno = f.warden->start_error();
+    f.outcome = RunOutcome::not_started(std::string("clone: ") + std::strerror(f.clone_errno));
     return false;
   }
   for (auto& slot : g_wardens)
@@ -239,11 +231,11 @@ void stop(Flight& f) {
 void land(Flight& f, const Deadline* timed_out, bool probe) {
   for (const Stream& s : f.streams) drain(s);
   const WardenReport report = read_status(f.status_text);
-  f.result.failures = report.failures;
-  f.result.outcome.exit = exit_of(report, timed_out, probe, f.warden_status);
-  f.result.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - f.start).count();
-  f.result.outcome.output = f.kept.text();
-  f.result.outcome.output_bytes = f.kept.total();
+  f.failures = report.failures;
+  f.outcome.exit = exit_of(report, timed_out, probe, f.warden_status);
+  f.outcome.exit.seconds = std::chrono::duration<double>(Clock::now() - f.start).count();
+  f.outcome.output = f.kept.text();
+  f.outcome.output_bytes = f.kept.total();
 }
 
 // Watches a run started (and a worker started before it, beside) until its
@@ -263,14 +255,6 @@ void fly(const confine::Plan& plan, Flight& f, RunObserver& observer, bool probe
   if (!plan.pid_ns) kill_descendants(before);  // what the killed wardens left is handed here
   if (beside) land(*beside, beside_ended ? nullptr : &beside_end, probe);
   land(f, ended ? nullptr : &deadline, probe);
-}
-
-SpawnResult spawn(const confine::Plan& plan, const std::string& workdir, const RunRequest& req, RunObserver& observer,
-                  bool probe, Fd& link_read, Fd& link_write) {
-  const std::set<pid_t> before = children_of(::getpid());
-  Flight f(plan.limits);
-  if (take_off(f, plan, workdir, req, observer, probe, link_read, link_write)) fly(plan, f, observer, probe, nullptr, before);
-  return f.result;
 }
 
 class FixedDeadline : public RunObserver {
@@ -434,7 +418,10 @@ void keep_layers_that_work(confine::Plan& p, const std::string& scratch, const s
     ::mkdir(workdir.c_str(), 0700);
     FixedDeadline observer(10);
     Fd no_link_read, no_link_write;
-    const SpawnResult r = spawn(p, workdir, request, observer, /*probe=*/true, no_link_read, no_link_write);
+    const std::set<pid_t> before = children_of(::getpid());
+    Flight r(p.limits);
+    if (take_off(r, p, workdir, request, observer, /*probe=*/true, no_link_read, no_link_write))
+      fly(p, r, observer, /*probe=*/true, nullptr, before);
     std::error_code ec;
     fs::remove_all(workdir, ec);
     if (r.clone_errno != 0) {
@@ -523,34 +510,25 @@ std::string Sandbox::prepare(const RunRequest& request, RunRequest& absolute, st
   return "";
 }
 
-RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer) {
-  Fd link_read(request.link_read), link_write(request.link_write);  // the run's, whatever happens
-  RunRequest absolute;
-  std::string workdir;
-  const std::string error = prepare(request, absolute, workdir);
-  SpawnResult r = error.empty() ? spawn(*plan_, workdir, absolute, observer, /*probe=*/false, link_read, link_write)
-                                : SpawnResult{RunOutcome::not_started(error), {}, 0};
-  std::error_code ec;
-  fs::remove_all(workdir, ec);
-  return std::move(r.outcome);
-}
-
-RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer, const RunRequest& worker,
-                        RunOutcome& worker_run) {
-  Fd links[] = {Fd(request.link_read), Fd(request.link_write), Fd(worker.link_read), Fd(worker.link_write)};
+RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer, const RunRequest* worker,
+                        RunOutcome* worker_run) {
+  const RunRequest none;
+  const RunRequest& beside = worker ? *worker : none;
+  Fd links[] = {Fd(request.link_read), Fd(request.link_write), Fd(beside.link_read), Fd(beside.link_write)};
   RunRequest absolute[2];
   std::string workdirs[2];
-  const std::string errors[2] = {prepare(worker, absolute[0], workdirs[0]), prepare(request, absolute[1], workdirs[1])};
+  const std::string errors[2] = {worker ? prepare(beside, absolute[0], workdirs[0]) : "",
+                                 prepare(request, absolute[1], workdirs[1])};
   const std::set<pid_t> before = children_of(::getpid());
   Flight w(plan_->limits), v(plan_->limits);
   const bool worker_started =
-      errors[0].empty() && take_off(w, *plan_, workdirs[0], absolute[0], observer, false, links[2], links[3]);
-  if (!errors[0].empty()) w.result.outcome = RunOutcome::not_started(errors[0]);
+      worker && errors[0].empty() && take_off(w, *plan_, workdirs[0], absolute[0], observer, false, links[2], links[3]);
+  if (!errors[0].empty()) w.outcome = RunOutcome::not_started(errors[0]);
   links[2].reset();  // a worker that never started: its verifier sees the end of its link
   links[3].reset();
   const bool started =
       errors[1].empty() && take_off(v, *plan_, workdirs[1], absolute[1], observer, false, links[0], links[1]);
-  if (!errors[1].empty()) v.result.outcome = RunOutcome::not_started(errors[1]);
+  if (!errors[1].empty()) v.outcome = RunOutcome::not_started(errors[1]);
   links[0].reset();  // a verifier that never started: its worker sees the end of its link
   links[1].reset();
   FixedDeadline one_second(1);
@@ -560,10 +538,10 @@ RunOutcome Sandbox::run(const RunRequest& request, RunObserver& observer, const 
     fly(*plan_, w, one_second, false, nullptr, before);
   for (const std::string& dir : workdirs) {
     std::error_code ec;
-    fs::remove_all(dir, ec);
+    if (!dir.empty()) fs::remove_all(dir, ec);
   }
-  worker_run = std::move(w.result.outcome);
-  return std::move(v.result.outcome);
+  if (worker_run) *worker_run = std::move(w.outcome);
+  return std::move(v.outcome);
 }
 
 }  // namespace pt::grade

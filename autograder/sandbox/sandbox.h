@@ -112,12 +112,14 @@ class Sandbox {
   // dead when this returns. (This process becomes a child subreaper: without
   // a PID namespace, the run's orphans are handed to it and killed; children
   // it had before the run are left alone.)
-  RunOutcome run(const RunRequest& request, RunObserver& observer);
-  // The same for a verifier (`request`) with its worker beside it, each in a
-  // run of its own (its own PID namespace where there are namespaces), both
-  // started from this thread: the worker's output is read while the verifier
-  // runs, and the worker is stopped a second after the verifier has ended.
-  RunOutcome run(const RunRequest& request, RunObserver& observer, const RunRequest& worker, RunOutcome& worker_run);
+  //
+  // With a `worker`, `request` is a verifier's and the worker runs beside it,
+  // in a run of its own (its own PID namespace where there are namespaces),
+  // both started from this thread: the worker's output is read while the
+  // verifier runs, and the worker is stopped a second after the verifier has
+  // ended. Its outcome is in *worker_run.
+  RunOutcome run(const RunRequest& request, RunObserver& observer, const RunRequest* worker = nullptr,
+                 RunOutcome* worker_run = nullptr);
 
   const std::vector<std::string>& layers() const { return active_; }  // e.g. "PID namespace"
   const std::vector<std::string>& layers_missing() const { return missing_; }
