@@ -65,20 +65,20 @@ class AskedHits {
   void get_hit(Reader& r, Intersection& h) const {
     r.get(h.t, h.n, h.barycentric);
     const auto primitive = r.get<Points>(), bsdf = r.get<Points>();
-    const bool prim_elsewhere = before_primitive_ && before_primitive_ != asked_;
-    const bool bsdf_elsewhere = before_bsdf_ && before_bsdf_ != asked_bsdf_;
-    h.primitive = primitive == Points::Nothing ? nullptr
-                  : primitive == Points::Asked ? asked_
-                                               : prim_elsewhere ? before_primitive_ : elsewhere_primitive();
-    h.bsdf = bsdf == Points::Nothing ? nullptr
-             : bsdf == Points::Asked ? asked_bsdf_
-                                     : bsdf_elsewhere ? before_bsdf_ : elsewhere_bsdf();
+    h.primitive = named(primitive, asked_, before_primitive_, elsewhere_primitive());
+    h.bsdf = named(bsdf, asked_bsdf_, before_bsdf_, elsewhere_bsdf());
   }
 
  private:
   enum class Points : uint8_t { Nothing = 0, Asked = 1, Elsewhere = 2 };
   static Points token(const void* p, const void* asked) {
     return p == nullptr ? Points::Nothing : p == asked ? Points::Asked : Points::Elsewhere;
+  }
+  template <class T>
+  static const T* named(Points p, const T* asked, const T* before, const T* stand_in) {
+    if (p == Points::Nothing) return nullptr;
+    if (p == Points::Asked) return asked;
+    return before && before != asked ? before : stand_in;
   }
 
   const Primitive* asked_;
