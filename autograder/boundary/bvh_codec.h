@@ -22,16 +22,12 @@
 #include <vector>
 
 #include "crossing.h"
+#include "hit_codec.h"
 #include "geometry/bvh.h"
 #include "objects.h"
 #include "wire.h"
 
 namespace pt::boundary::bvh {
-
-// A primitive named in an answer: its index in the order the verifier sent
-// them, or one of these.
-constexpr int64_t kNoPrimitive = -1;  // a null pointer
-constexpr int64_t kElsewhere = -2;    // not one of the primitives sent
 
 // Neither end hears when a BVHAccel is freed (its destructor is the
 // framework's): both keep the trees built last. A test holds a few at a time.
@@ -181,7 +177,7 @@ constexpr uint32_t kMaxPrefetched = 32;
 
 struct BuiltTree;
 struct WorkerTree;
-class InUse;
+struct InUse;
 
 }  // namespace pt::boundary::bvh
 
@@ -195,8 +191,8 @@ struct TreeBuild {
     explicit Sent(BVHAccel& accel);
     ~Sent();
     void put(Writer& w) const;
-    void begin(BVHAccel::PrimIter at) const;  // must be the first primitive
-    void end(BVHAccel::PrimIter at) const;    // must be past the last
+    // BEGIN must be the first primitive, END past the last.
+    void whole(BVHAccel::PrimIter at, bool begin) const;
     std::unique_ptr<BVHNode> get_tree(Reader& r);
 
    private:
@@ -242,19 +238,14 @@ struct Tree {
     double t_before_ = 0.0;
     int64_t handle_before_ = 0;
   };
-  struct Held {
+  struct Held : HeldObject<Held> {
     explicit Held(Reader& in);
     const BVHNode* get_node(Reader& r) const;
     void get_hit(Reader& r, Intersection& h) const;
     void put_hit(Writer& w, const Intersection& h) const;
-    template <class Fn, class... Args>
-    bool invoke(Fn fn, Args&&... args) {
-      return (accel().*fn)(std::forward<Args>(args)...);
-    }
-    void put_after(Writer&) const {}
+    const BVHAccel& object() const;
 
    private:
-    const BVHAccel& accel() const;
     bvh::WorkerTree& tree_;
   };
 };

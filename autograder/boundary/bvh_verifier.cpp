@@ -17,6 +17,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "hit_codec.h"
+#include "scoped.h"
 #include "verifier_link.h"
 
 namespace pt::boundary::bvh {
@@ -102,23 +103,17 @@ void index_primitive(BuiltTree& tree, const Primitive* p, int64_t index) {
   cannot_cross(*p);
 }
 
+// What the build's order names at a position: a null or a primitive of the
+// worker's own stands as one that nothing hits.
 Primitive* primitive_at(int64_t index, const std::vector<Primitive*>& sent) {
-  if (index >= 0 && static_cast<uint64_t>(index) < sent.size()) return sent[static_cast<size_t>(index)];
-  if (index == kNoPrimitive || index == kElsewhere) return not_sent();
-  throw LinkBroken("a primitive index out of range");
+  const Primitive* p = object_at(index, sent.size(), [&](size_t k) { return sent[k]; }, elsewhere_primitive());
+  return p && p != elsewhere_primitive() ? const_cast<Primitive*>(p) : not_sent();
 }
 
 // What a handle of the worker's names here: a hit on something the worker
 // made crosses as "something else", which no test's primitive equals.
 const Primitive* named_by(const BuiltTree& tree, int64_t handle) {
-  if (handle == kNoPrimitive) return nullptr;
-  return handle == kElsewhere ? elsewhere_primitive() : primitive_at(handle, tree.sent);
-}
-
-int64_t handle_in(const BuiltTree& tree, const Primitive* p) {
-  if (!p) return kNoPrimitive;
-  const auto found = tree.handle_of.find(p);
-  return found == tree.handle_of.end() ? kElsewhere : found->second;
+  return object_at(handle, tree.sent.size(), [&](size_t k) { return tree.sent[k]; }, elsewhere_primitive());
 }
 
 // The build or traversal being answered: its tree, the only one whose
@@ -131,17 +126,10 @@ struct Query {
 };
 Query* g_query = nullptr;
 
-class InUse {
- public:
-  InUse(const BuiltTree& tree, bool work_read) : query_{&tree, work_read, {}}, previous_(g_query) { g_query = &query_; }
-  ~InUse() { g_query = previous_; }
-  InUse(const InUse&) = delete;
-  InUse& operator=(const InUse&) = delete;
-  const Query& query() const { return query_; }
-
- private:
-  Query query_;
-  Query* previous_;
+struct InUse {
+  InUse(const BuiltTree& tree, bool work_read) : query{&tree, work_read, {}} {}
+  Query query;
+  Scoped<Query*> scope{g_query, &query};
 };
 
 // One test on the verifier's own primitive: a counting one counts it here.
@@ -212,7 +200,7 @@ void fill_hit(Intersection& isect, const Query& q, int64_t handle, double t) {
   isect = Intersection();
   isect.t = t;
   isect.primitive = named_by(*q.tree, handle);
-  isect.bsdf = handle >= 0 ? isect.primitive->get_bsdf() : handle == kElsewhere ? elsewhere_bsdf() : nullptr;
+  isect.bsdf = handle >= 0 ? isect.primitive->get_bsdf() : handle == kElsewhereObject ? elsewhere_bsdf() : nullptr;
 }
 
 }  // namespace pt::boundary::bvh
@@ -240,14 +228,8 @@ void TreeBuild::Sent::put(Writer& w) const {
   for (const Primitive* p : tree_->sent) w.put(p->get_bbox()).put(static_cast<uint8_t>(p->get_bsdf() != nullptr));
 }
 
-void TreeBuild::Sent::begin(BVHAccel::PrimIter at) const {
-  if (at != accel_.primitives().begin())
-    throw std::logic_error("construct_bvh crosses the process boundary only over all of a BVHAccel's primitives, as "
-                           "its constructor calls it (autograder/boundary/README.md)");
-}
-
-void TreeBuild::Sent::end(BVHAccel::PrimIter at) const {
-  if (at != accel_.primitives().end())
+void TreeBuild::Sent::whole(BVHAccel::PrimIter at, bool begin) const {
+  if (at != (begin ? accel_.primitives().begin() : accel_.primitives().end()))
     throw std::logic_error("construct_bvh crosses the process boundary only over all of a BVHAccel's primitives, as "
                            "its constructor calls it (autograder/boundary/README.md)");
 }
@@ -291,14 +273,14 @@ void Tree::Sent::put_node(Writer& w, const BVHNode* node) const {
 
 void Tree::Sent::put_hit(Writer& w, const Intersection& h) {
   t_before_ = h.t;
-  handle_before_ = bvh::handle_in(tree_, h.primitive);
+  handle_before_ = index_of(h.primitive, tree_.handle_of);
   w.put(h.t).put(handle_before_);
 }
 
 void Tree::Sent::get_hit(Reader& r, Intersection& h) const {
   const auto t = r.get<double>();
   const auto handle = r.get<int64_t>();
-  if (handle != handle_before_ || t != t_before_) bvh::fill_hit(h, in_use_->query(), handle, t);
+  if (handle != handle_before_ || t != t_before_) bvh::fill_hit(h, in_use_->query, handle, t);
 }
 
 }  // namespace pt::boundary

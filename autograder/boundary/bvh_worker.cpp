@@ -9,6 +9,7 @@
 
 #include "bvh_codec.h"
 #include "hit_codec.h"
+#include "scoped.h"
 #include "worker_link.h"
 
 namespace pt::boundary {
@@ -52,34 +53,8 @@ std::deque<std::unique_ptr<WorkerTree>>& trees() {
   return t;
 }
 
-WorkerTree& tree_named(uint64_t id) {
-  for (auto& t : trees())
-    if (t->id == id) return *t;
-  throw std::runtime_error("a traversal names a BVH the worker does not keep (it keeps the last " +
-                           std::to_string(kTreesKept) + " built)");
-}
-
-// Reads the primitives sent into `t`'s handles, in order.
-void read_primitives(Reader& in, WorkerTree& t, uint64_t count) {
-  for (uint64_t i = 0; i < count; ++i) {
-    const auto box = in.get<BBox>();
-    const bool with_bsdf = in.get<uint8_t>() != 0;
-    t.handles.push_back(std::make_unique<Handle>(t.id, static_cast<uint32_t>(i), box, with_bsdf));
-    t.index_of[t.handles.back().get()] = static_cast<int64_t>(i);
-  }
-}
-
-int64_t index_in(const WorkerTree& t, const Primitive* p) {
-  if (!p) return kNoPrimitive;
-  const auto found = t.index_of.find(p);
-  return found == t.index_of.end() ? kElsewhere : found->second;
-}
-
 const Primitive* handle_at(const WorkerTree& t, int64_t h) {
-  if (h >= 0 && static_cast<uint64_t>(h) < t.handles.size()) return t.handles[static_cast<size_t>(h)].get();
-  if (h == kElsewhere) return elsewhere_primitive();
-  if (h == kNoPrimitive) return nullptr;
-  throw std::runtime_error("a hit on a primitive the tree does not have");
+  return object_at(h, t.handles.size(), [&](size_t k) { return t.handles[k].get(); }, elsewhere_primitive());
 }
 
 // The answers the verifier gave ahead, for the tests of a leaf (bvh_codec.h).
@@ -94,18 +69,18 @@ WorkerTree*& building() {
   return t;
 }
 
-struct Building {
-  explicit Building(WorkerTree& t) { building() = &t; }
-  ~Building() { building() = nullptr; }
-  Building(const Building&) = delete;
-  Building& operator=(const Building&) = delete;
-};
-
-const WorkerTree* tree_of(uint64_t id) {
+// A tree kept, or the one being built, by its id.
+WorkerTree* tree_of(uint64_t id) {
   if (building() && building()->id == id) return building();
   for (auto& t : trees())
     if (t->id == id) return t.get();
   return nullptr;
+}
+
+WorkerTree& tree_named(uint64_t id) {
+  if (WorkerTree* t = tree_of(id)) return *t;
+  throw std::runtime_error("a traversal names a BVH the worker does not keep (it keeps the last " +
+                           std::to_string(kTreesKept) + " built)");
 }
 
 // Bit for bit (a -0.0 is not a 0.0 to a slab or a triangle test); Ray has padding.
@@ -168,7 +143,11 @@ TreeBuild::Held::Held(Reader& in) : tree_(std::make_unique<WorkerTree>()) {
   room_ = in.get<int64_t>();
   const auto count = in.get<uint64_t>();
   if (count > kMaxPayload / sizeof(BBox)) throw std::runtime_error("more primitives than the message holds");
-  bvh::read_primitives(in, *tree_, count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const auto box = in.get<BBox>();
+    tree_->handles.push_back(std::make_unique<bvh::Handle>(tree_->id, i, box, in.get<uint8_t>() != 0));
+    tree_->index_of[tree_->handles.back().get()] = i;
+  }
 }
 
 TreeBuild::Held::~Held() = default;
@@ -177,14 +156,14 @@ void TreeBuild::Held::build(size_t max_leaf_size) {
   std::vector<Primitive*> input;
   for (auto& p : tree_->handles) input.push_back(p.get());
   bvh::prefetched().clear();
-  const bvh::Building now(*tree_);
+  const Scoped<bvh::WorkerTree*> now(bvh::building(), tree_.get());
   const bvh::AddressSpaceRoom limit(room_);
   tree_->accel = std::make_unique<BVHAccel>(std::move(input), max_leaf_size);  // the student's construct_bvh
 }
 
 void TreeBuild::Held::put_tree(Writer& w) {
   std::vector<int64_t> order;
-  for (const Primitive* p : tree_->accel->primitives()) order.push_back(bvh::index_in(*tree_, p));
+  for (const Primitive* p : tree_->accel->primitives()) order.push_back(index_of(p, tree_->index_of));
   w.put_vector(order);
   bvh::put_tree(w, tree_->accel->root(), tree_->preorder);
   auto& kept = bvh::trees();
@@ -194,7 +173,7 @@ void TreeBuild::Held::put_tree(Writer& w) {
 
 Tree::Held::Held(Reader& in) : tree_(bvh::tree_named(in.get<uint64_t>())) { bvh::prefetched().clear(); }
 
-const BVHAccel& Tree::Held::accel() const { return *tree_.accel; }
+const BVHAccel& Tree::Held::object() const { return *tree_.accel; }
 
 const BVHNode* Tree::Held::get_node(Reader& r) const {
   const auto node_id = r.get<int64_t>();
@@ -209,6 +188,6 @@ void Tree::Held::get_hit(Reader& r, Intersection& h) const {
   h.bsdf = h.primitive ? h.primitive->get_bsdf() : nullptr;
 }
 
-void Tree::Held::put_hit(Writer& w, const Intersection& h) const { w.put(h.t).put(bvh::index_in(tree_, h.primitive)); }
+void Tree::Held::put_hit(Writer& w, const Intersection& h) const { w.put(h.t).put(index_of(h.primitive, tree_.index_of)); }
 
 }  // namespace pt::boundary

@@ -38,19 +38,12 @@ struct Crossing<Ray> {
   static void put(Writer& w, const Ray& r) { w.put(r.o).put(r.d).put(r.min_t).put(r.max_t).put(r.depth); }
   static Ray get(Reader& r) {
     Ray ray;
-    r.get(ray.o);
-    r.get(ray.d);
-    r.get(ray.min_t);
-    r.get(ray.max_t);
-    r.get(ray.depth);
+    r.get(ray.o, ray.d, ray.min_t, ray.max_t, ray.depth);
     return ray;
   }
   // What a query changes of a const Ray: its range (mutable), which a hit shrinks.
   static void put_range(Writer& w, const Ray& r) { w.put(r.min_t).put(r.max_t); }
-  static void get_range(Reader& r, const Ray& ray) {
-    r.get(ray.min_t);
-    r.get(ray.max_t);
-  }
+  static void get_range(Reader& r, const Ray& ray) { r.get(ray.min_t, ray.max_t); }
 };
 
 template <>
@@ -58,8 +51,7 @@ struct Crossing<PixelEstimate> {
   static void put(Writer& w, const PixelEstimate& e) { w.put(e.radiance).put(e.num_samples); }
   static PixelEstimate get(Reader& r) {
     PixelEstimate e;
-    r.get(e.radiance);
-    r.get(e.num_samples);
+    r.get(e.radiance, e.num_samples);
     return e;
   }
 };
@@ -126,8 +118,7 @@ struct OutTag {};
 struct InOutTag {};
 struct GeneratorTag {};
 struct CallbackTag {};
-struct BeginTag {};
-struct EndTag {};
+struct RangeTag {};  // BEGIN and END
 
 template <class... Args>
 constexpr bool kTakesGenerator = (std::is_same_v<Args, Generator> || ...);

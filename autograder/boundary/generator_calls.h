@@ -34,6 +34,7 @@
 
 #include "core/generator_contract.h"
 #include "core/rng.h"
+#include "scoped.h"
 #include "wire.h"
 
 namespace pt::boundary {
@@ -67,17 +68,6 @@ struct Tape {
   bool differs = false;
 };
 inline thread_local Tape* g_tape = nullptr;
-
-class TapeScope {
- public:
-  explicit TapeScope(Tape* tape) : previous_(g_tape) { g_tape = tape; }
-  ~TapeScope() { g_tape = previous_; }
-  TapeScope(const TapeScope&) = delete;
-  TapeScope& operator=(const TapeScope&) = delete;
-
- private:
-  Tape* previous_;
-};
 
 // Serves a callback of the verifier's with `serve`, or while a tape plays,
 // from the tape. `args` are the callback's arguments as received.
@@ -136,7 +126,7 @@ class GeneratorCalls {
       try {
         Tape tape;
         {
-          const TapeScope record(calls_back_ ? &tape : nullptr);
+          const Scoped<Tape*> record(g_tape, calls_back_ ? &tape : nullptr);
           read_run(ask_worker(call_, request(start_, want_)), want_, run_, ends_, states_);
         }
         Rng before = start_;
@@ -236,7 +226,7 @@ class GeneratorCalls {
     std::vector<Rng> state;
     tape.playing = true;
     try {
-      const TapeScope play(calls_back_ ? &tape : nullptr);
+      const Scoped<Tape*> play(g_tape, calls_back_ ? &tape : nullptr);
       read_run(ask_worker(call_, request(i == 0 ? start_ : states_[i - 1], 1)), 1, bytes, ends, state);
     } catch (const LinkBroken&) {
       throw;

@@ -3,7 +3,10 @@
 // mean nothing in the other process, so each crosses as what it points at:
 // nothing, the primitive asked (or its BSDF), or something else, which the
 // receiving side maps to an object of its own. The calls on a scene and on a
-// BVH name their objects by index instead (scene_codec.h, bvh_codec.h).
+// BVH name their objects by index instead (below).
+#include <cstdint>
+#include <unordered_map>
+
 #include "geometry/intersection.h"
 #include "geometry/primitive.h"
 #include "geometry/sphere.h"
@@ -23,6 +26,28 @@ inline const BSDF* elsewhere_bsdf() {
   return &b;
 }
 
+// The calls on a scene and on a BVH name an object by its index in what was
+// sent, or as one of these.
+constexpr int64_t kNoObject = -1;         // a null pointer
+constexpr int64_t kElsewhereObject = -2;  // an object that is not one of those sent
+
+template <class T>
+int64_t index_of(const T* object, const std::unordered_map<const T*, int64_t>& index) {
+  if (!object) return kNoObject;
+  const auto found = index.find(object);
+  return found == index.end() ? kElsewhereObject : found->second;
+}
+
+// The object index `i` names among `count` sent (`at(i)` gives one): a wrong
+// index is what no honest peer sends.
+template <class T, class At>
+const T* object_at(int64_t i, size_t count, At&& at, const T* elsewhere) {
+  if (i == kNoObject) return nullptr;
+  if (i == kElsewhereObject) return elsewhere;
+  if (i < 0 || static_cast<uint64_t>(i) >= count) throw LinkBroken("an object index out of range");
+  return at(static_cast<size_t>(i));
+}
+
 // The hits of calls on `asked`. Each side uses it the same way: a hit sent
 // remembers what it pointed at, and "something else" in the hit that comes
 // back is that again when it was something else too (the verifier's own
@@ -38,24 +63,22 @@ class AskedHits {
   }
 
   void get_hit(Reader& r, Intersection& h) const {
-    r.get(h.t);
-    r.get(h.n);
-    r.get(h.barycentric);
+    r.get(h.t, h.n, h.barycentric);
     const auto primitive = r.get<Points>(), bsdf = r.get<Points>();
-    const bool prim_elsewhere = before_primitive_ && before_primitive_ != asked_;
-    const bool bsdf_elsewhere = before_bsdf_ && before_bsdf_ != asked_bsdf_;
-    h.primitive = primitive == Points::Nothing ? nullptr
-                  : primitive == Points::Asked ? asked_
-                                               : prim_elsewhere ? before_primitive_ : elsewhere_primitive();
-    h.bsdf = bsdf == Points::Nothing ? nullptr
-             : bsdf == Points::Asked ? asked_bsdf_
-                                     : bsdf_elsewhere ? before_bsdf_ : elsewhere_bsdf();
+    h.primitive = named(primitive, asked_, before_primitive_, elsewhere_primitive());
+    h.bsdf = named(bsdf, asked_bsdf_, before_bsdf_, elsewhere_bsdf());
   }
 
  private:
   enum class Points : uint8_t { Nothing = 0, Asked = 1, Elsewhere = 2 };
   static Points token(const void* p, const void* asked) {
     return p == nullptr ? Points::Nothing : p == asked ? Points::Asked : Points::Elsewhere;
+  }
+  template <class T>
+  static const T* named(Points p, const T* asked, const T* before, const T* stand_in) {
+    if (p == Points::Nothing) return nullptr;
+    if (p == Points::Asked) return asked;
+    return before && before != asked ? before : stand_in;
   }
 
   const Primitive* asked_;

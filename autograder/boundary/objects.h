@@ -179,9 +179,9 @@ class RemoteTracer : public PathTracer {
 struct PixelTracer {
   static constexpr bool kCallsBack = true;
   struct Sent : SentObject {
-    explicit Sent(const PathTracer& t) : scope(&t), self(t) {}
+    explicit Sent(const PathTracer& t) : scope(g_tracer, &t), self(t) {}
     void put(Writer& w) const { w.put(self.settings).put(*self.camera); }
-    TracerScope scope;
+    Scoped<const PathTracer*> scope;
     const PathTracer& self;
   };
   struct Held : HeldObject<Held> {

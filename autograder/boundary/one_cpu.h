@@ -11,7 +11,6 @@
 // others' load in view: two runs side by side (ctest -j2) then rarely share
 // one CPU while the other idles, as a pick by process id did half the time.
 #include <sched.h>
-#include <unistd.h>
 
 #include <optional>
 
@@ -19,23 +18,13 @@ namespace pt::boundary {
 
 inline std::optional<cpu_set_t> one_cpu() {
   cpu_set_t allowed;
-  if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return std::nullopt;
-  const int count = CPU_COUNT(&allowed);
-  if (count <= 1) return std::nullopt;
+  if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0 || CPU_COUNT(&allowed) <= 1) return std::nullopt;
+  const int here = ::sched_getcpu();
+  if (here < 0 || here >= CPU_SETSIZE || !CPU_ISSET(here, &allowed)) return std::nullopt;
   cpu_set_t one;
   CPU_ZERO(&one);
-  const int here = ::sched_getcpu();
-  if (here >= 0 && here < CPU_SETSIZE && CPU_ISSET(here, &allowed)) {
-    CPU_SET(here, &one);
-    return one;
-  }
-  int pick = static_cast<int>(::getpid() % count);
-  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
-    if (CPU_ISSET(cpu, &allowed) && pick-- == 0) {
-      CPU_SET(cpu, &one);
-      return one;
-    }
-  return std::nullopt;
+  CPU_SET(here, &one);
+  return one;
 }
 
 }  // namespace pt::boundary

@@ -50,32 +50,24 @@ void take_back(Reader&, const Role&, Object&) {}  // IN, RNG, CALLBACK, BEGIN, E
 // BEGIN and END are the object's to check.
 template <class Object>
 void check_range(const Begin& a, Object& object) {
-  object.begin(a.at);
+  object.whole(a.at, true);
 }
 template <class Object>
 void check_range(const End& a, Object& object) {
-  object.end(a.at);
+  object.whole(a.at, false);
 }
 template <class Role, class Object>
 void check_range(const Role&, Object&) {}
 
-template <class... Args>
-Rng* generator_in(const Args&... args) {
-  Rng* rng = nullptr;
+// The argument of role `Role` (RNG, CALLBACK), if the call has one.
+template <class Role, class... Args>
+const Role* role_in(const Args&... args) {
+  const Role* found = nullptr;
   auto take = [&](const auto& a) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(a)>, Generator>) rng = &a.rng;
+    if constexpr (std::is_same_v<std::decay_t<decltype(a)>, Role>) found = &a;
   };
   (take(args), ...);
-  return rng;
-}
-template <class... Args>
-const std::function<Spectrum()>* callback_in(const Args&... args) {
-  const std::function<Spectrum()>* next = nullptr;
-  auto take = [&](const auto& a) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(a)>, Callback>) next = &a.next;
-  };
-  (take(args), ...);
-  return next;
+  return found;
 }
 
 template <class R, class Object>
@@ -95,13 +87,13 @@ R ask(const char* task, typename Object::Sent& object, Args... args) {
   Writer request(256);
   object.put(request);
   (put_argument(request, args, object), ...);
-  std::optional<SampleSourceScope> samples;
-  if (const auto* next = callback_in(args...)) samples.emplace(next);
+  std::optional<Scoped<const std::function<Spectrum()>*>> samples;
+  if (const auto* callback = role_in<Callback>(args...)) samples.emplace(g_next_sample, &callback->next);
   std::string one;
   std::string_view answer;
   if constexpr (kTakesGenerator<Args...>) {
     thread_local GeneratorCalls runs(call, task, Object::kCallsBack);
-    answer = read_answer([&] { return runs.next(request, *generator_in(args...), call_worker); });
+    answer = read_answer([&] { return runs.next(request, role_in<Generator>(args...)->rng, call_worker); });
   } else {
     one = call_worker(call, request);
     answer = one;

@@ -29,17 +29,8 @@ const T* exactly(const Base& object) {
                          ") to the worker: only the framework's own types cross (autograder/boundary/README.md)");
 }
 
-int64_t bsdf_index(const BSDF* bsdf, const SceneIndex& index) {
-  if (!bsdf) return kNoObject;
-  const auto found = index.bsdfs.find(bsdf);
-  return found == index.bsdfs.end() ? kElsewhereObject : found->second;
-}
-
 const BSDF* bsdf_at(int64_t i, const Scene& scene) {
-  if (i == kNoObject) return nullptr;
-  if (i == kElsewhereObject) return elsewhere_bsdf();
-  if (i < 0 || static_cast<size_t>(i) >= scene.bsdfs.size()) throw std::runtime_error("a BSDF index out of range");
-  return scene.bsdfs[static_cast<size_t>(i)].get();
+  return object_at(i, scene.bsdfs.size(), [&](size_t k) { return scene.bsdfs[k].get(); }, elsewhere_bsdf());
 }
 
 void put_bsdf(Writer& w, const BSDF& b) {
@@ -121,7 +112,7 @@ void put_scene(Writer& w, const Scene& scene, SceneIndex& index) {
     } else {
       cannot_cross("primitive", typeid(p));
     }
-    w.put(bsdf_index(p.get_bsdf(), index));
+    w.put(index_of(p.get_bsdf(), index.bsdfs));
   }
   w.put(static_cast<uint64_t>(scene.lights.size()));
   for (const auto& l : scene.lights) put_light(w, *l);
@@ -187,28 +178,14 @@ std::unique_ptr<Scene> get_scene(Reader& r) {
 }
 
 void put_scene_hit(Writer& w, const Intersection& hit, const SceneIndex& index) {
-  int64_t primitive = kNoObject;
-  if (hit.primitive) {
-    const auto found = index.primitives.find(hit.primitive);
-    primitive = found == index.primitives.end() ? kElsewhereObject : found->second;
-  }
-  w.put(hit.t).put(hit.n).put(hit.barycentric).put(primitive).put(bsdf_index(hit.bsdf, index));
+  w.put(hit.t).put(hit.n).put(hit.barycentric).put(index_of(hit.primitive, index.primitives));
+  w.put(index_of(hit.bsdf, index.bsdfs));
 }
 
 void get_scene_hit(Reader& r, Intersection& hit, const Scene& scene) {
-  r.get(hit.t);
-  r.get(hit.n);
-  r.get(hit.barycentric);
-  const auto primitive = r.get<int64_t>();
-  if (primitive == kNoObject) {
-    hit.primitive = nullptr;
-  } else if (primitive == kElsewhereObject) {
-    hit.primitive = elsewhere_primitive();
-  } else if (primitive >= 0 && static_cast<size_t>(primitive) < scene.primitives.size()) {
-    hit.primitive = scene.primitives[static_cast<size_t>(primitive)].get();
-  } else {
-    throw std::runtime_error("a primitive index out of range");
-  }
+  r.get(hit.t, hit.n, hit.barycentric);
+  hit.primitive = object_at(r.get<int64_t>(), scene.primitives.size(),
+                            [&](size_t k) { return scene.primitives[k].get(); }, elsewhere_primitive());
   hit.bsdf = bsdf_at(r.get<int64_t>(), scene);
 }
 

@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "geometry/intersection.h"
+#include "hit_codec.h"
 #include "objects.h"
 #include "render/pathtracer.h"
 #include "scene/path_guard.h"
@@ -18,10 +19,6 @@
 #include "wire.h"
 
 namespace pt::boundary {
-
-// Indices of a hit record that name no object of the scene.
-constexpr int64_t kNoObject = -1;         // a null pointer
-constexpr int64_t kElsewhereObject = -2;  // an object that is not the scene's
 
 // The verifier's side: the scene's objects by address.
 struct SceneIndex {
@@ -89,8 +86,7 @@ struct SceneTracer {
   };
   struct Held {
     explicit Held(Reader& in) : scene(scene_named(in.get<uint64_t>())), tracer(scene, in.get<RenderSettings>()) {
-      in.get(samples);
-      in.get(limit);
+      in.get(samples, limit);
     }
     void get_hit(Reader& r, Intersection& h) const { get_scene_hit(r, h, scene); }
     // The call under the guard, from where the verifier's was: a path it

@@ -11,8 +11,8 @@
 #define INOUT(x) ::pt::boundary::InOutTag{}
 #define RNG(x) ::pt::boundary::GeneratorTag{}
 #define CALLBACK(x) ::pt::boundary::CallbackTag{}
-#define BEGIN(x) ::pt::boundary::BeginTag{}
-#define END(x) ::pt::boundary::EndTag{}
+#define BEGIN(x) ::pt::boundary::RangeTag{}
+#define END(x) ::pt::boundary::RangeTag{}
 
 #define PT_METHOD(part, task, call, R, Class, name, params, qualifier, Object, ...)                   \
   PT_ROWS_OF_PART_##part(link.on(Call::call, serve<Object>(static_cast<R(Class::*) params qualifier>( \

@@ -121,19 +121,12 @@ class HeldArgument<const std::function<Spectrum()>&, CallbackTag> : public Uncha
 };
 
 // BEGIN, END: the object's whole range, which the object builds over itself.
-template <class Tag>
-struct HeldRange : Unchanging {
+template <>
+class HeldArgument<BVHAccel::PrimIter, RangeTag> : public Unchanging {
+ public:
   template <class Object>
-  HeldRange(Reader&, Object&) {}
+  HeldArgument(Reader&, Object&) {}
   BVHAccel::PrimIter arg(Rng*) { return {}; }
-};
-template <>
-class HeldArgument<BVHAccel::PrimIter, BeginTag> : public HeldRange<BeginTag> {
-  using HeldRange::HeldRange;
-};
-template <>
-class HeldArgument<BVHAccel::PrimIter, EndTag> : public HeldRange<EndTag> {
-  using HeldRange::HeldRange;
 };
 
 template <class R, class Object>

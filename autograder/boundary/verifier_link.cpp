@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
-#include <iterator>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -28,19 +27,10 @@
 namespace pt::boundary {
 namespace {
 
-thread_local const PathTracer* g_tracer = nullptr;
-thread_local const std::function<Spectrum()>* g_next_sample = nullptr;
-
 std::vector<std::string> own_arguments() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
-  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::vector<std::string> args;
-  for (size_t at = 0; at < all.size();) {
-    const size_t end = all.find('\0', at);
-    args.push_back(all.substr(at, end == std::string::npos ? std::string::npos : end - at));
-    if (end == std::string::npos) break;
-    at = end + 1;
-  }
+  for (std::string a; std::getline(in, a, '\0');) args.push_back(a);
   return args;
 }
 
@@ -221,13 +211,5 @@ SceneRef refer_to(const Scene& scene) {
   }
   return {id, index};
 }
-
-TracerScope::TracerScope(const PathTracer* tracer) : previous_(g_tracer) { g_tracer = tracer; }
-TracerScope::~TracerScope() { g_tracer = previous_; }
-
-SampleSourceScope::SampleSourceScope(const std::function<Spectrum()>* next_sample) : previous_(g_next_sample) {
-  g_next_sample = next_sample;
-}
-SampleSourceScope::~SampleSourceScope() { g_next_sample = previous_; }
 
 }  // namespace pt::boundary

@@ -10,11 +10,13 @@
 //   --pt_worker=PATH        start PATH here (a student's or ctest's run)
 // Without either, every proxy fails its test saying so.
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 
 #include "render/pathtracer.h"
 #include "scene/scene.h"
+#include "scoped.h"
 #include "verifier_exit_codes.h"
 #include "wire.h"
 
@@ -47,30 +49,10 @@ auto read_answer(Read&& read) -> decltype(read()) {
   }
 }
 
-// While one lives, the worker's calls back to EstRadiance go to `tracer`
-// (its own est_radiance_global_illumination: a test's scripted one, or the
-// solution's).
-class TracerScope {
- public:
-  explicit TracerScope(const PathTracer* tracer);
-  ~TracerScope();
-  TracerScope(const TracerScope&) = delete;
-  TracerScope& operator=(const TracerScope&) = delete;
-
- private:
-  const PathTracer* previous_;
-};
-
-// The same for Part 5's next_sample.
-class SampleSourceScope {
- public:
-  explicit SampleSourceScope(const std::function<Spectrum()>* next_sample);
-  ~SampleSourceScope();
-  SampleSourceScope(const SampleSourceScope&) = delete;
-  SampleSourceScope& operator=(const SampleSourceScope&) = delete;
-
- private:
-  const std::function<Spectrum()>* previous_;
-};
+// Where the worker's calls back go, while a call that makes them is answered
+// (Scoped): EstRadiance to this tracer's est_radiance_global_illumination (a
+// test's scripted one, or the solution's), NextSample to Part 5's next_sample.
+inline thread_local const PathTracer* g_tracer = nullptr;
+inline thread_local const std::function<Spectrum()>* g_next_sample = nullptr;
 
 }  // namespace pt::boundary

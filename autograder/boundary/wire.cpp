@@ -108,9 +108,8 @@ void Link::send(Kind kind, uint16_t call, uint32_t tag, const std::string& paylo
 }
 
 void Link::handle(const Message& m) {
-  Writer result;
-  Kind kind = Kind::Return;
-  Writer thrown;
+  Writer result, thrown;
+  const auto fail = [&](Thrown what, const char* text) { thrown.put(what).put_string(text); };
   try {
     if (m.call >= handlers_.size() || !handlers_[m.call])
       throw std::runtime_error("the other side asked for call " + std::to_string(m.call) + ", which this side does not serve");
@@ -120,19 +119,16 @@ void Link::handle(const Message& m) {
   } catch (const LinkBroken&) {
     throw;
   } catch (const NotImplemented& e) {
-    kind = Kind::Throw;
-    thrown.put(Thrown::NotImplemented).put_string(e.what());
+    fail(Thrown::NotImplemented, e.what());
   } catch (const std::bad_alloc& e) {
-    kind = Kind::Throw;
-    thrown.put(Thrown::OutOfMemory).put_string(e.what());
+    fail(Thrown::OutOfMemory, e.what());
   } catch (const std::exception& e) {
-    kind = Kind::Throw;
-    thrown.put(Thrown::Error).put_string(e.what());
+    fail(Thrown::Error, e.what());
   } catch (...) {
-    kind = Kind::Throw;
-    thrown.put(Thrown::Error).put_string("an exception that is not a std::exception");
+    fail(Thrown::Error, "an exception that is not a std::exception");
   }
-  send(kind, m.call, m.tag, kind == Kind::Return ? result.bytes() : thrown.bytes());
+  const bool threw = thrown.size() > 0;
+  send(threw ? Kind::Throw : Kind::Return, m.call, m.tag, threw ? thrown.bytes() : result.bytes());
 }
 
 std::string Link::call(Call call, const Writer& args) {

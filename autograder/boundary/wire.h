@@ -100,9 +100,9 @@ class Reader {
     at_ += sizeof(T);
     return value;
   }
-  template <class T>
-  void get(T& value) {
-    value = get<T>();
+  template <class... T>
+  void get(T&... values) {
+    ((values = get<T>()), ...);
   }
   std::string get_string(size_t max = 1 << 16);
   // The same, as a view into the message (valid while its bytes are).
