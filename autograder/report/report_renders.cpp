@@ -106,10 +106,8 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
                               (fs::path(job.kit) / "scenes" / "library.json").string(), "--scene", s.name, "--render",
                               exr.string(), "--samples", std::to_string(s.samples), "--out", checked.string()},
                              &answer);
-  json j;
-  try {
-    j = json::parse(answer);
-  } catch (const json::exception&) {
+  const json j = json::parse(answer, nullptr, false);
+  if (!j.is_object()) {
     c.error = "pt-library-check failed (exit status " + std::to_string(rc) + "): an instructor must look";
     return c;
   }
