@@ -330,13 +330,15 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
 int check_submission(const CheckOptions& opt) {
   const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
   ResultChannel result(opt.format == "github-classroom");
+  // A check that stopped before any test ran: its result for GitHub Classroom says why.
+  const auto stopped = [&](const char* status, const std::string& what, const std::string& why, double points) {
+    if (result.active()) result.write(classroom_stopped(status, what, why, points));
+  };
   const json facts = read_facts(source);
   if (!fs::is_regular_file(build / "CMakeCache.txt")) {
     std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
                  build.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     build.string() + " is not a configured build", 0));
+    stopped("error", "pt-grade check-submission: could not check", build.string() + " is not a configured build", 0);
     return 2;
   }
   std::map<int, std::string> expected;
@@ -361,9 +363,7 @@ int check_submission(const CheckOptions& opt) {
     const std::string why = pipeline.rejection();
     std::fputs(indented(why).c_str(), stdout);
     std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
-    if (result.active())
-      result.write(classroom_stopped("fail", "The files: the grader would reject every part", why,
-                                     visible_points(build)));
+    stopped("fail", "The files: the grader would reject every part", why, visible_points(build));
     return 1;
   }
   compare_with_tasks(source, sub, answer);
@@ -384,9 +384,8 @@ int check_submission(const CheckOptions& opt) {
   const fs::path manifest_path = build / "tests" / "graded_manifest.json";
   if (!fs::is_regular_file(manifest_path)) {
     std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     manifest_path.string() + " not found: the release is not built", 0));
+    stopped("error", "pt-grade check-submission: could not check",
+            manifest_path.string() + " not found: the release is not built", 0);
     return 2;
   }
   // The student cannot know whether the instructor counts the extension

@@ -89,12 +89,6 @@ class Reports : public Ending {
                            number(std::round(seconds * 10) / 10, "%g s"));
   }
 
-  // Every part given `why` at once: a submission rejected whole, or a grader
-  // that failed.
-  void ungradable(const std::string& why, const std::string& each) {
-    for (auto& p : report.parts) set_part(p.part, each);
-    report.ungradable = why;
-  }
   void finish() {
     report.complete = true;
     save();
@@ -345,7 +339,8 @@ int grade_submission(const SubmissionOptions& opt) {
   if (!taken) {
     const std::string why = pipeline.rejection();
     // Said once, in the notes; each part's tests say its first lines.
-    out.ungradable(why, summary(why, "the whole list is in the report's notes"));
+    for (auto& p : out.report.parts) out.set_part(p.part, summary(why, "the whole list is in the report's notes"));
+    out.report.ungradable = why;
     out.report.notes.push_back(why);
     out.finish();
     return 0;
