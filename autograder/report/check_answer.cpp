@@ -4,6 +4,8 @@
 #include <regex>
 #include <set>
 
+#include "report/report_text.h"
+
 namespace pt::grade {
 
 std::string task_file_state(const std::string& text) {
@@ -11,16 +13,9 @@ std::string task_file_state(const std::string& text) {
                                               std::regex(R"(//[^\n]*)"), "");
   const std::regex thrown(R"(throw\s+(?:pt::)?NotImplemented\s*\(\s*"(P[0-9]+T[0-9]+))");
   std::set<std::string> tasks;
-  bool any = false;
-  for (std::sregex_iterator it(code.begin(), code.end(), thrown), end; it != end; ++it) {
-    tasks.insert((*it)[1].str());
-    any = true;
-  }
-  if (!any && std::regex_search(code, std::regex(R"(throw\s+(?:pt::)?NotImplemented)"))) any = true;
-  if (!any) return "yours";
-  std::string list;
-  for (const auto& t : tasks) list += (list.empty() ? "" : ", ") + t;
-  return "started: " + (list.empty() ? std::string("a task") : list) + " still throw" +
+  for (std::sregex_iterator it(code.begin(), code.end(), thrown), end; it != end; ++it) tasks.insert((*it)[1].str());
+  if (tasks.empty() && !std::regex_search(code, std::regex(R"(throw\s+(?:pt::)?NotImplemented)"))) return "yours";
+  return "started: " + (tasks.empty() ? std::string("a task") : joined(tasks, ", ")) + " still throw" +
          (tasks.size() == 1 ? "s" : "") + " NotImplemented";
 }
 
@@ -31,25 +26,14 @@ bool untouched(const PartResult& part) {
   return true;
 }
 
-std::string points_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);  // points are given in hundredths
-  std::string s = buf;
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
-
 void print_answer(const std::vector<PartAnswer>& parts, const std::vector<std::string>& problems, bool as_grader) {
   std::printf("\n%-5s %-46s %-16s %s\n", "part", "task file", "visible points", "at grading");
   for (const auto& p : parts) {
-    std::string at_grading = p.differs;
-    if (p.hidden.tests > 0)
-      at_grading += (at_grading.empty() ? "" : "; ") + std::string("+ hidden: ") + std::to_string(p.hidden.tests) +
-                    " tests, " + points_number(p.hidden.points) + (p.hidden.points == 1 ? " point" : " points") +
-                    " not run here";
+    std::vector<std::string> at_grading;
+    if (!p.differs.empty()) at_grading.push_back(p.differs);
+    if (p.hidden.tests > 0) at_grading.push_back("+ hidden: " + p.hidden.text() + " not run here");
     const std::string score = points_number(p.earned) + " / " + points_number(p.possible);
-    std::printf("%-5d %-46s %-16s %s\n", p.part, p.state.c_str(), score.c_str(), at_grading.c_str());
+    std::printf("%-5d %-46s %-16s %s\n", p.part, p.state.c_str(), score.c_str(), joined(at_grading, "; ").c_str());
   }
   if (problems.empty() && !as_grader) {
     std::printf("\nREADY, as far as this platform can check: the grader will build these files as this check did; "

@@ -34,7 +34,4 @@ struct PartAnswer {
 void print_answer(const std::vector<PartAnswer>& parts, const std::vector<std::string>& problems,
                   bool as_grader = true);
 
-// "0.5", "12", "33.1": a score at the precision points are given in.
-std::string points_number(double v);
-
 }  // namespace pt::grade

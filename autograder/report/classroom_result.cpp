@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <regex>
 
 #include <nlohmann/json.hpp>
 
-#include "report/check_answer.h"
 #include "report/report_text.h"
 
 namespace pt::grade {
@@ -41,10 +41,6 @@ int line_of(const std::string& task, const std::string& text) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
 }
 
-std::string points_of(double earned, double possible) {
-  return points_number(earned) + " / " + points_number(possible) + (possible == 1 ? " point" : " points");
-}
-
 struct Task {
   std::string id;
   std::vector<const TestResult*> tests;  // visible ones, manifest order
@@ -52,24 +48,23 @@ struct Task {
 
 json task_entry(const Task& task, const PartResult& part, const ClassroomFile* file, const HandoutIndex& handouts,
                 size_t message_cap) {
-  double earned = 0, possible = 0, seconds = 0;
-  std::string filter, failures;
-  int failed = 0;
+  Tally tally;
+  double seconds = 0;
+  std::vector<std::string> names;
+  std::string failures;
   bool counted = false;
   for (const TestResult* t : task.tests) {
-    possible += t->test.points;
-    earned += t->passed() ? t->test.points : 0;
+    tally.add(*t);
     seconds += t->seconds;
     counted = counted || !t->test.uncounted();
-    filter += (filter.empty() ? "" : ":") + t->test.name;
+    names.push_back(t->test.name);
     if (t->passed()) continue;
-    ++failed;
     failures += "\n" + t->test.name + " (" + points_number(t->test.points) + "): " +
                 summary(t->message, "./build/tests/part" + std::to_string(part.part) + "_tests shows all of it");
   }
-  std::string name = task_title(task.id, handouts) + ": " + points_of(earned, possible);
+  std::string name = task_title(task.id, handouts) + ": " + tally.points() + (tally.possible == 1 ? " point" : " points");
   if (!counted) name += " (extension, not counted)";
-  const size_t n = task.tests.size();
+  const int n = tally.total, failed = n - tally.passed;
   std::string message;
   if (!part.graded)
     message = "not graded: " + (task.tests.empty() ? std::string() : task.tests.front()->message);
@@ -80,8 +75,8 @@ json task_entry(const Task& task, const PartResult& part, const ClassroomFile* f
   if (const auto it = handouts.tasks.find(task.id); it != handouts.tasks.end())
     message += "\n(" + it->second.file + ", section \"" + it->second.section + "\")";
   const std::string status = !part.graded ? "error" : failed == 0 ? "pass" : "fail";
-  return entry(name, status, earned, capped(message, message_cap),
-               "./build/tests/part" + std::to_string(part.part) + "_tests --gtest_filter=" + filter,
+  return entry(name, status, tally.earned, capped(message, message_cap),
+               "./build/tests/part" + std::to_string(part.part) + "_tests --gtest_filter=" + joined(names, ":"),
                file ? file->path : "", file ? line_of(task.id, file->text) : 0, seconds);
 }
 
@@ -91,25 +86,20 @@ json document(const Report& report, const std::map<int, ClassroomFile>& files, c
   double max_score = 0;
   bool all_passed = true;
   for (const auto& part : report.parts) {
-    std::vector<Task> tasks;
+    std::map<int, Task> tasks;  // by number: the handout's order (P1T1, P1T2, ...), not the manifest's
     for (const auto& t : part.tests) {
       if (t.test.hidden) continue;  // not in a release; an instructor's checkout lists them in its manifest
       max_score += t.test.points;
       all_passed = all_passed && (t.passed() || t.test.uncounted());
-      auto it = std::find_if(tasks.begin(), tasks.end(), [&](const Task& k) { return k.id == t.test.task; });
-      if (it == tasks.end()) it = tasks.insert(tasks.end(), Task{t.test.task, {}});
-      it->tests.push_back(&t);
+      Task& task = tasks[std::stoi(t.test.task.substr(t.test.task.find('T') + 1))];
+      task.id = t.test.task;
+      task.tests.push_back(&t);
     }
-    // In the handout's order (P1T1, P1T2, ...), not the manifest's.
-    const auto number = [](const std::string& id) { return std::stoi(id.substr(id.find('T') + 1)); };
-    std::stable_sort(tasks.begin(), tasks.end(), [&](const Task& a, const Task& b) { return number(a.id) < number(b.id); });
     const auto file = files.find(part.part);
-    for (const auto& task : tasks)
+    for (const auto& [number, task] : tasks)
       tests.push_back(task_entry(task, part, file == files.end() ? nullptr : &file->second, handouts, message_cap));
     if (const auto h = report.hidden_not_run.find(part.part); h != report.hidden_not_run.end() && h->second.tests > 0) {
-      const std::string what = std::to_string(h->second.tests) + " tests, " +
-                               points_number(h->second.points) + (h->second.points == 1 ? " point" : " points");
-      tests.push_back(entry("Part " + std::to_string(part.part) + " hidden tests: not run here (" + what + ")", "error",
+      tests.push_back(entry("Part " + std::to_string(part.part) + " hidden tests: not run here (" + h->second.text() + ")", "error",
                             0,
                             "The course's grader runs these when you submit; this repository does not hold them. "
                             "handouts/part" + std::to_string(part.part) +

@@ -3,36 +3,17 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <vector>
 
 namespace pt::grade {
 
-namespace {
-
 namespace fs = std::filesystem;
-
-std::vector<std::string> cells_of(const std::string& row) {
-  std::vector<std::string> cells;
-  size_t pos = row.find('|');
-  while (pos != std::string::npos) {
-    const size_t next = row.find('|', pos + 1);
-    if (next == std::string::npos) break;
-    std::string c = row.substr(pos + 1, next - pos - 1);
-    const auto b = c.find_first_not_of(' '), e = c.find_last_not_of(' ');
-    cells.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
-    pos = next;
-  }
-  return cells;
-}
-
-}  // namespace
 
 HandoutIndex index_handouts(const std::string& dir) {
   HandoutIndex index;
   const std::regex task_tag(R"(P[0-9]+T[0-9]+)");
   const std::regex todo_tag(R"(`TODO\((P[0-9]+T[0-9]+)\)`)");
   const std::regex test_name(R"(`([A-Za-z0-9_]+\.[A-Za-z0-9_]+)`)");
-  std::error_code ec;
+  const std::regex last_cell(R"(\|\s*([^|]*?)\s*\|[^|]*$)");
   for (int part = 1; part <= 9; ++part) {
     const fs::path file = fs::path(dir) / ("part" + std::to_string(part) + ".md");
     std::ifstream in(file);
@@ -55,11 +36,9 @@ HandoutIndex index_handouts(const std::string& dir) {
       }
       // A grading table row: | `Suite.Name` | task | points | visible | what it checks |
       if (line.rfind("| `", 0) == 0) {
-        std::smatch m;
-        if (std::regex_search(line, m, test_name) && m.position(0) <= 2) {
-          const auto cells = cells_of(line);
-          if (!cells.empty()) index.test_rows.emplace(m[1].str(), cells.back());
-        }
+        std::smatch m, cell;
+        if (std::regex_search(line, m, test_name) && m.position(0) <= 2 && std::regex_search(line, cell, last_cell))
+          index.test_rows.emplace(m[1].str(), cell[1].str());
       }
     }
     for (const auto& [task, sec] : from_table) index.tasks.emplace(task, HandoutRef{rel, sec});

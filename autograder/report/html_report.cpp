@@ -1,6 +1,6 @@
 #include "report/html_report.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
@@ -32,12 +32,6 @@ std::string esc(const std::string& s) {
   return out;
 }
 
-std::string num(double v, const char* f = "%g") {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 const char* kStyle = R"(
 body{font:15px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:#222;padding:0 1em}
 h1{font-size:1.6em;margin-bottom:.2em} h2{margin-top:1.8em;border-bottom:1px solid #ddd}
@@ -53,22 +47,21 @@ figcaption{font-size:.85em;color:#555} .flag{color:#b00;font-weight:600} .ok{col
 .muted{color:#666;font-size:.9em}
 )";
 
-struct TaskTally {
-  int passed = 0, total = 0;
-  double earned = 0, possible = 0;
-};
-
 std::string score_class(double earned, double possible) {
   if (possible <= 0) return "";
   return earned >= possible ? "full" : earned > 0 ? "part" : "zero";
 }
 
 // A handout heading as text: without Markdown's backticks.
-std::string plain(const std::string& md) {
-  std::string out;
-  for (char c : md)
-    if (c != '`') out += c;
-  return out;
+std::string plain(std::string md) {
+  md.erase(std::remove(md.begin(), md.end(), '`'), md.end());
+  return md;
+}
+
+// "handouts/part1.md §3. Triangle intersection (P1T3)", escaped; "" for a task no handout names.
+std::string handout_section(const HandoutIndex& handouts, const std::string& task) {
+  const auto ref = handouts.tasks.find(task);
+  return ref == handouts.tasks.end() ? "" : esc(ref->second.file + " §" + plain(ref->second.section));
 }
 
 std::string image(const std::string& path, const std::string& alt, size_t* image_bytes) {
@@ -140,33 +133,25 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
     earned += p.earned();
     possible += p.possible();
   }
-  h << "<h1>" << esc(page.title) << "</h1>\n<p><b>" << num(earned) << " / " << num(possible) << " points</b>"
-    << " <span class=muted>graded in " << num(r.seconds, "%.0f") << " s"
+  h << "<h1>" << esc(page.title) << "</h1>\n<p><b>" << number(earned) << " / " << number(possible) << " points</b>"
+    << " <span class=muted>graded in " << number(r.seconds, "%.0f") << " s"
     << (r.complete ? "" : "; <span class=flag>incomplete: the grader stopped before the end</span>") << "</span></p>\n";
 
   // Score per part and per task.
   h << "<h2>Score</h2>\n<table><tr><th>part</th><th>task</th><th>tests passed</th><th>points</th><th>handout</th></tr>\n";
   for (const auto& p : r.parts) {
-    std::map<std::string, TaskTally> tasks;
-    for (const auto& t : p.tests) {
-      TaskTally& tt = tasks[t.test.task];
-      ++tt.total;
-      tt.passed += t.passed();
-      tt.earned += t.passed() ? t.test.points : 0;
-      tt.possible += t.test.points;
-    }
+    std::map<std::string, Tally> tasks;
+    for (const auto& t : p.tests) tasks[t.test.task].add(t);
     bool first = true;
-    for (const auto& [task, tt] : tasks) {
+    for (const auto& [task, tally] : tasks) {
       h << "<tr>";
-      if (first) {
+      if (first)
         h << "<td rowspan=" << tasks.size() << " class=\"" << score_class(p.earned(), p.possible()) << "\"><b>Part "
-          << p.part << "</b><br>" << num(p.earned()) << " / " << num(p.possible()) << "</td>";
-        first = false;
-      }
-      auto ref = page.handouts.tasks.find(task);
-      h << "<td>" << esc(task) << "</td><td class=num>" << tt.passed << " / " << tt.total << "</td><td class=\"num "
-        << score_class(tt.earned, tt.possible) << "\">" << num(tt.earned) << " / " << num(tt.possible) << "</td><td>"
-        << (ref != page.handouts.tasks.end() ? esc(ref->second.file + " §" + plain(ref->second.section)) : "") << "</td></tr>\n";
+          << p.part << "</b><br>" << number(p.earned()) << " / " << number(p.possible()) << "</td>";
+      first = false;
+      h << "<td>" << esc(task) << "</td><td class=num>" << tally.tests() << "</td><td class=\"num "
+        << score_class(tally.earned, tally.possible) << "\">" << number(tally.earned) << " / "
+        << number(tally.possible) << "</td><td>" << handout_section(page.handouts, task) << "</td></tr>\n";
     }
   }
   h << "</table>\n";
@@ -182,7 +167,7 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
     for (const auto& t : p.tests) one_reason = one_reason && !t.passed() && t.message == p.tests.front().message;
     if (one_reason && p.tests.size() > 1) {
       any_failure = true;
-      h << "<div class=fail><h3>Part " << p.part << ": all " << p.tests.size() << " tests, " << num(p.possible())
+      h << "<div class=fail><h3>Part " << p.part << ": all " << p.tests.size() << " tests, " << number(p.possible())
         << " points</h3><pre>" << esc(capped(p.tests.front().message, bounds.message)) << "</pre></div>\n";
       continue;
     }
@@ -190,15 +175,14 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
       if (t.passed()) continue;
       any_failure = true;
       h << "<div class=fail><h3>" << esc(t.test.task) << " " << esc(t.test.name) << "<span class=tag>"
-        << num(t.test.points) << (t.test.points == 1 ? " point" : " points") << "</span>"
+        << points_text(t.test.points) << "</span>"
         << (t.test.hidden ? "<span class=\"tag hidden-tag\">hidden</span>" : "")
         << (t.test.extension ? "<span class=tag>extension</span>" : "") << "<span class=tag>"
         << esc(t.status_name()) << "</span></h3>";
       auto row = page.handouts.test_rows.find(t.test.name);
       if (row != page.handouts.test_rows.end()) h << "<div class=muted>Checks: " << esc(plain(row->second)) << "</div>";
-      auto ref = page.handouts.tasks.find(t.test.task);
-      if (ref != page.handouts.tasks.end())
-        h << "<div class=muted>Read: " << esc(ref->second.file) << " §" << esc(plain(ref->second.section)) << "</div>";
+      if (page.handouts.tasks.count(t.test.task))
+        h << "<div class=muted>Read: " << handout_section(page.handouts, t.test.task) << "</div>";
       h << "<pre>" << esc(capped(t.message, bounds.message)) << "</pre>";
       if (!t.output.empty())
         h << "<div class=muted>Last output before it stopped:</div><pre>" << esc(capped(t.output, bounds.output))
@@ -214,8 +198,7 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
   if (!page.renders_note.empty()) h << "<p class=muted>" << esc(page.renders_note) << "</p>\n";
   for (const auto& c : page.renders) {
     h << "<h3>" << esc(c.scene) << " <span class=muted>" << esc(c.purpose) << "</span></h3>\n<p>";
-    std::string parts;
-    for (int n : c.student_parts) parts += (parts.empty() ? "" : ", ") + std::to_string(n);
+    const std::string parts = joined(c.student_parts, ", ");
     h << esc(c.settings) << "; the submission's part(s) " << (parts.empty() ? "none" : parts)
       << ", the solution for the rest. ";
     if (!c.error.empty()) {
@@ -223,10 +206,10 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
       continue;
     }
     if (c.relmse >= 0) {
-      h << "relMSE " << num(c.relmse, "%.3g");
+      h << "relMSE " << number(c.relmse, "%.3g");
       if (c.expected_relmse >= 0)
-        h << " (the solution's own noise at this sample count: " << num(c.expected_relmse, "%.3g") << ", bound "
-          << num(c.bound, "%.3g") << ")";
+        h << " (the solution's own noise at this sample count: " << number(c.expected_relmse, "%.3g") << ", bound "
+          << number(c.bound, "%.3g") << ")";
       h << (c.flagged ? " <span class=flag>far beyond what the sample count explains" +
                             (c.suspect.empty() ? std::string() : ": look at " + esc(c.suspect)) + "</span>"
                       : " <span class=ok>within what the sample count explains</span>");
@@ -235,7 +218,7 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
       << "<figure>" << image(c.reference_png, "reference", image_bytes) << "<figcaption>stored reference</figcaption></figure>"
       << "<figure>" << image(c.difference_png, "difference", image_bytes)
       << "<figcaption>|difference| of illuminance, false colour: red = "
-      << (c.difference_scale > 0 ? num(c.difference_scale, "%.3g") + ", twice the 99th percentile of a correct render's noise"
+      << (c.difference_scale > 0 ? number(c.difference_scale, "%.3g") + ", twice the 99th percentile of a correct render's noise"
                                  : std::string("the 99th percentile"))
       << "</figcaption></figure></div>\n";
     if (!c.detail.empty()) h << "<p class=muted>" << esc(capped(c.detail, bounds.note)) << "</p>\n";
@@ -253,15 +236,9 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
     for (const auto& n : notes) h << "<li><pre>" << esc(n) << "</pre></li>";
     h << "</ul>";
   }
-  if (!r.sandbox_layers.empty()) {
-    h << "<p class=muted>Sandbox layers: ";
-    for (size_t i = 0; i < r.sandbox_layers.size(); ++i) h << (i ? "; " : "") << esc(r.sandbox_layers[i]);
-    if (!r.sandbox_missing.empty()) {
-      h << ". Missing: ";
-      for (size_t i = 0; i < r.sandbox_missing.size(); ++i) h << (i ? "; " : "") << esc(r.sandbox_missing[i]);
-    }
-    h << ".</p>\n";
-  }
+  if (!r.sandbox_layers.empty())
+    h << "<p class=muted>Sandbox layers: " << esc(joined(r.sandbox_layers, "; "))
+      << (r.sandbox_missing.empty() ? "" : ". Missing: " + esc(joined(r.sandbox_missing, "; "))) << ".</p>\n";
   h << "</body></html>\n";
   return h.str();
 }

@@ -96,11 +96,10 @@ std::vector<LeaderboardEntry> leaderboard_entries(const std::map<std::string, do
           {"Node visits per ray", rounded(nodes->second), "asc"}};
 }
 
-void add_leaderboard(Report& report, const std::string& kit, const std::map<int, std::string>& binaries,
-                     const std::map<int, std::string>& workers, Sandbox& sandbox, Clock::time_point deadline) {
+void add_leaderboard(Report& report, const std::string& kit, const std::string& verifier, const std::string& worker,
+                     Sandbox& sandbox, Clock::time_point deadline) {
   const std::string solution = (std::filesystem::path(kit) / "verifiers" / "part2_worker_reference").string();
-  const auto verifier = binaries.find(2), worker = workers.find(2);
-  if (verifier == binaries.end() || worker == workers.end() || !std::filesystem::is_regular_file(solution)) {
+  if (verifier.empty() || worker.empty() || !std::filesystem::is_regular_file(solution)) {
     report.notes.push_back("the leaderboard: part 2 was not graded beside a worker, or the kit has no " + solution);
     return;
   }
@@ -110,8 +109,8 @@ void add_leaderboard(Report& report, const std::string& kit, const std::map<int,
     return;
   }
   std::string why;
-  const auto mine = leaderboard_measures(sandbox, verifier->second, worker->second, seconds, &why);
-  const auto theirs = mine.empty() ? mine : leaderboard_measures(sandbox, verifier->second, solution, seconds, &why);
+  const auto mine = leaderboard_measures(sandbox, verifier, worker, seconds, &why);
+  const auto theirs = mine.empty() ? mine : leaderboard_measures(sandbox, verifier, solution, seconds, &why);
   report.leaderboard = theirs.empty() ? std::vector<LeaderboardEntry>() : leaderboard_entries(mine, theirs, &why);
   if (report.leaderboard.empty()) report.notes.push_back(why);
 }

@@ -39,11 +39,11 @@ std::vector<LeaderboardEntry> leaderboard_entries(const std::map<std::string, do
                                                   const std::map<std::string, double>& solution, std::string* why);
 
 // For `pt-grade submission --leaderboard`: report.leaderboard from part 2's
-// verifier (binaries[2]) beside the submission's worker (workers[2]) and
-// beside the kit's solution worker, within what is left before `deadline`
-// (60 s at most); a note in the report instead when part 2 was not graded
-// across the boundary or its tree gave no measurements.
-void add_leaderboard(Report& report, const std::string& kit, const std::map<int, std::string>& binaries,
-                     const std::map<int, std::string>& workers, Sandbox& sandbox, Clock::time_point deadline);
+// verifier beside the submission's worker and beside the kit's solution
+// worker, within what is left before `deadline` (60 s at most); a note in the
+// report instead when part 2 was not graded across the boundary (either is
+// "") or its tree gave no measurements.
+void add_leaderboard(Report& report, const std::string& kit, const std::string& verifier, const std::string& worker,
+                     Sandbox& sandbox, Clock::time_point deadline);
 
 }  // namespace pt::grade

@@ -1,6 +1,5 @@
 #include "report/prairielearn_report.h"
 
-#include <cstdio>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -16,29 +15,13 @@ namespace {
 
 using nlohmann::json;
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-std::string points_of(double earned, double possible) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g / %g points", earned, possible);
-  return buf;
-}
-
-std::string parts_text(const std::vector<int>& parts) {
-  std::string s;
-  for (int p : parts) s += (s.empty() ? "" : ", ") + std::to_string(p);
-  return s;
-}
+std::string g3(double v) { return number(v, "%.3g"); }
 
 // One scene's render in a line: how it was judged, or why there is none.
 std::string render_line(const RenderComparison& c) {
   std::string line = c.scene + " (" + c.settings + "): ";
   if (!c.error.empty()) return line + c.error;
-  line += "relMSE " + number(c.relmse) + ", expected " + number(c.expected_relmse) + ", bound " + number(c.bound);
+  line += "relMSE " + g3(c.relmse) + ", expected " + g3(c.expected_relmse) + ", bound " + g3(c.bound);
   if (c.flagged) line += ": beyond what its sample count explains" + (c.suspect.empty() ? "" : ", most likely " + c.suspect);
   return line;
 }
@@ -94,9 +77,9 @@ json render_images(const HtmlReport& page, int shrink, int* left_out) {
       continue;
     }
     used += student.size() + reference.size();
-    const std::string verdict = c.flagged ? "flagged, relMSE " + number(c.relmse) + " above " + number(c.bound)
-                                          : "relMSE " + number(c.relmse) + ", within " + number(c.bound);
-    images.push_back({{"label", c.scene + ": your render (parts " + parts_text(c.student_parts) + "; " + verdict + ")"},
+    const std::string verdict = c.flagged ? "flagged, relMSE " + g3(c.relmse) + " above " + g3(c.bound)
+                                          : "relMSE " + g3(c.relmse) + ", within " + g3(c.bound);
+    images.push_back({{"label", c.scene + ": your render (parts " + joined(c.student_parts, ", ") + "; " + verdict + ")"},
                       {"url", student}});
     images.push_back({{"label", c.scene + ": stored reference"}, {"url", reference}});
   }
@@ -113,23 +96,20 @@ std::string description(const TestResult& t, const HandoutIndex& handouts) {
   return text;
 }
 
-json tests_of(const Report& report, const HandoutIndex& handouts, const TextBounds& bounds, double* earned,
-              double* possible) {
+json tests_of(const Report& report, const HandoutIndex& handouts, const TextBounds& bounds, Tally* all) {
   json tests = json::array();
   std::map<std::string, int> hidden_count;  // by task
   for (const auto& p : report.parts)
     for (const auto& t : p.tests) {
-      const double points = t.passed() ? t.test.points : 0.0;
-      *earned += points;
-      *possible += t.test.points;
-      const std::string uncounted = t.test.uncounted() ? " (extension, not counted)" : "";
-      json test = {{"points", points}, {"max_points", t.test.points}, {"message", t.status_name()}};
+      all->add(t);
+      json test = {{"points", t.passed() ? t.test.points : 0.0}, {"max_points", t.test.points}, {"message", t.status_name()}};
       if (t.test.hidden) {
-        test["name"] = t.test.task + " hidden test " + std::to_string(++hidden_count[t.test.task]) + uncounted;
+        test["name"] = t.test.task + " hidden test " + std::to_string(++hidden_count[t.test.task]) +
+                       (t.test.uncounted() ? " (extension, not counted)" : "");
         test["description"] = "A hidden test: its name and messages are for the instructor. " + description(t, handouts);
         test["output"] = "";
       } else {
-        test["name"] = t.test.task + " " + t.test.name + uncounted;
+        test["name"] = test_title(t);
         test["description"] = description(t, handouts);
         test["output"] = test_output(t, bounds);
       }
@@ -149,8 +129,8 @@ std::string document(const HtmlReport& page, const json& images, int shrink, int
     doc = {{"gradable", false}, {"score", 0.0}, {"message", "Not graded: " + summary(why, "see the output")},
            {"format_errors", json::array({why})}, {"output", output}, {"images", json::array()}, {"tests", json::array()}};
   } else {
-    double earned = 0, possible = 0;
-    json tests = tests_of(report, page.handouts, bounds, &earned, &possible);
+    Tally all;
+    json tests = tests_of(report, page.handouts, bounds, &all);
     output += "\nRenders: " + page.renders_note + "\n";
     for (const auto& c : page.renders) output += "  " + capped(render_line(c), bounds.note) + "\n";
     if (shrink > 1 && !images.empty())
@@ -159,9 +139,9 @@ std::string document(const HtmlReport& page, const json& images, int shrink, int
     if (left_out > 0)
       output += "  " + std::to_string(left_out) + " scene(s) rendered but not shown: PrairieLearn takes at most 1 MB " +
                 "of results, and the images shown use " + std::to_string(kMaxImageBytes / 1000) + " kB of it\n";
-    std::string message = points_of(earned, possible) + ".";
+    std::string message = all.points() + " points.";
     if (!report.complete) message += " Grading stopped before every part was graded: see the output.";
-    doc = {{"gradable", true}, {"score", possible > 0 ? earned / possible : 0.0}, {"message", message},
+    doc = {{"gradable", true}, {"score", all.possible > 0 ? all.earned / all.possible : 0.0}, {"message", message},
            {"output", output}, {"images", images}, {"tests", std::move(tests)}};
   }
   // Messages are whatever the tests printed: never let bad UTF-8 stop the report.

@@ -16,14 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-std::string points_text(double v) { return fmt(v) + (v == 1 ? " point" : " points"); }
-
 std::string first_lines(const std::string& text, size_t count, const std::string& indent) {
   std::string out;
   size_t pos = 0, shown = 0;
@@ -42,20 +34,24 @@ std::string first_lines(const std::string& text, size_t count, const std::string
   return out;
 }
 
-struct Tally {
-  int passed = 0, total = 0;
-  double earned = 0, possible = 0;
-  void add(const TestResult& t) {
-    ++total;
-    passed += t.passed();
-    earned += t.passed() ? t.test.points : 0;
-    possible += t.test.points;
-  }
-  std::string tests() const { return std::to_string(passed) + " / " + std::to_string(total); }
-  std::string points() const { return fmt(earned) + " / " + fmt(possible); }
-};
-
 }  // namespace
+
+std::string HiddenNotRun::text() const {
+  return std::to_string(tests) + " tests, " + points_text(points);
+}
+
+void Tally::add(const TestResult& t) {
+  ++total;
+  passed += t.passed();
+  earned += t.passed() ? t.test.points : 0;
+  possible += t.test.points;
+}
+std::string Tally::tests() const { return std::to_string(passed) + " / " + std::to_string(total); }
+std::string Tally::points() const { return points_number(earned) + " / " + points_number(possible); }
+
+std::string test_title(const TestResult& t) {
+  return t.test.task + " " + t.test.name + (t.test.uncounted() ? " (extension, not counted)" : "");
+}
 
 std::vector<std::string> all_notes(const Report& report, const TextBounds& bounds) {
   std::vector<std::string> notes = report.notes;
@@ -80,10 +76,6 @@ std::string instructor_text(const Report& report, const TextBounds& bounds) {
   for (const auto& n : report.instructor_notes) flags += n + "\n";
   return capped(flags, bounds.flags);
 }
-
-namespace {
-
-}  // namespace
 
 std::string folded(const std::string& text, const std::string& indent, size_t width) {
   std::string out;
@@ -118,17 +110,15 @@ namespace {
 
 json results_document(const Report& report, const TextBounds& bounds) {
   json tests = json::array(), parts = json::object();
-  double score = 0;
+  Tally all;
   for (const auto& p : report.parts) {
     for (const auto& t : p.tests) {
-      const std::string output = test_output(t, bounds);
-      score += t.passed() ? t.test.points : 0;
-      const std::string uncounted = t.test.uncounted() ? " (extension, not counted)" : "";
-      tests.push_back({{"name", t.test.task + " " + t.test.name + uncounted},
+      all.add(t);
+      tests.push_back({{"name", test_title(t)},
                        {"score", t.passed() ? t.test.points : 0.0},
                        {"max_score", t.test.points},
                        {"status", t.passed() ? "passed" : "failed"},
-                       {"output", output},
+                       {"output", test_output(t, bounds)},
                        {"visibility", t.test.hidden ? "after_published" : "visible"},
                        {"extra_data",
                         {{"part", p.part},
@@ -150,7 +140,7 @@ json results_document(const Report& report, const TextBounds& bounds) {
   }
   std::string text;
   for (const auto& n : all_notes(report, bounds)) text += n + "\n";
-  json doc = {{"score", score},
+  json doc = {{"score", all.earned},
               {"execution_time", std::round(report.seconds * 10) / 10},
               {"tests", tests},
               {"extra_data",
@@ -210,19 +200,17 @@ void print_report(const Report& report, bool show_hidden) {
       if (t.test.hidden) hidden.add(t);
       if (t.test.uncounted()) uncounted.add(t);
     }
-    std::string extra =
-        hidden.total == 0 ? "" : "including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points";
-    if (uncounted.total > 0)
-      extra += (extra.empty() ? "" : "; ") + std::string("including extension tests, not counted: ") +
-               uncounted.tests();
+    std::vector<std::string> extra;
+    if (!p.graded) extra.push_back("not graded");
+    if (hidden.total > 0) extra.push_back("including hidden: " + hidden.tests() + " tests, " + hidden.points() + " points");
+    if (uncounted.total > 0) extra.push_back("including extension tests, not counted: " + uncounted.tests());
     if (auto it = report.hidden_not_run.find(p.part); it != report.hidden_not_run.end() && it->second.tests > 0) {
-      extra += (extra.empty() ? "" : "; ") + std::string("hidden: ") + std::to_string(it->second.tests) + " tests, " +
-               points_text(it->second.points) + " not run here";
+      extra.push_back("hidden: " + it->second.text() + " not run here");
       all_unrun.tests += it->second.tests;
       all_unrun.points += it->second.points;
     }
-    if (!p.graded) extra = "not graded" + (extra.empty() ? "" : "; " + extra);
-    std::printf("%-6d %-14s %-14s %s\n", p.part, part.tests().c_str(), part.points().c_str(), extra.c_str());
+    std::printf("%-6d %-14s %-14s %s\n", p.part, part.tests().c_str(), part.points().c_str(),
+                joined(extra, "; ").c_str());
   }
   const std::string unrun =
       all_unrun.tests == 0 ? "" : "hidden: " + points_text(all_unrun.points) + " not run here (the grader runs them)";
@@ -262,15 +250,12 @@ void print_report(const Report& report, bool show_hidden) {
 std::map<std::string, double> test_seconds_from_results(const std::string& path) {
   std::map<std::string, double> seconds;
   std::ifstream in(path);
-  if (!in) return seconds;
-  const json doc = json::parse(in, nullptr, false);
+  const json doc = json::parse(in, nullptr, false);  // a missing file or bad JSON: discarded, not an object
   if (!doc.is_object() || !doc.contains("tests") || !doc["tests"].is_array()) return seconds;
   for (const auto& t : doc["tests"]) {
-    const auto extra = t.find("extra_data");
-    if (extra == t.end() || !extra->is_object()) continue;
-    const auto name = extra->find("test"), took = extra->find("seconds");
-    if (name != extra->end() && name->is_string() && took != extra->end() && took->is_number())
-      seconds[name->get<std::string>()] = took->get<double>();
+    const json extra = t.is_object() ? t.value("extra_data", json()) : json();
+    if (extra.is_object() && extra.value("test", json()).is_string() && extra.value("seconds", json()).is_number())
+      seconds[extra["test"].get<std::string>()] = extra["seconds"].get<double>();
   }
   return seconds;
 }

@@ -16,6 +16,7 @@ namespace pt::grade {
 struct HiddenNotRun {
   int tests = 0;
   double points = 0;
+  std::string text() const;  // "5 tests, 6.5 points"
 };
 
 // One entry of Gradescope's leaderboard (leaderboard.h): order "asc" when
@@ -45,6 +46,18 @@ struct Report {
   std::string ungradable;
   bool complete = false;  // every part graded (false while grading, or after a budget ran out)
 };
+
+// Tests passed and points earned among some tests: a part's, a task's, all.
+struct Tally {
+  int passed = 0, total = 0;
+  double earned = 0, possible = 0;
+  void add(const TestResult& t);
+  std::string tests() const;   // "3 / 4"
+  std::string points() const;  // "2.5 / 4"
+};
+
+// "P5T3 Suite.Name (extension, not counted)": a test as the result files name it.
+std::string test_title(const TestResult& t);
 
 struct TextBounds;
 

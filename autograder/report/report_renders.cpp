@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "process/command.h"
+#include "report/report_text.h"
 
 namespace pt::grade {
 
@@ -39,12 +40,6 @@ class RenderWatch : public RunObserver {
 
 double seconds_until(Clock::time_point t) { return std::chrono::duration<double>(t - Clock::now()).count(); }
 
-std::string list_text(const std::set<int>& parts, const char* sep) {
-  std::string s;
-  for (int n : parts) s += (s.empty() ? "" : sep) + std::to_string(n);
-  return s;
-}
-
 struct SceneRender {
   std::string name, purpose, settings, exr;
   int samples = 0;
@@ -65,7 +60,7 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
                                   const fs::path& checked, Sandbox& sandbox, Clock::time_point end) {
   RenderComparison c = comparison_of(s);
   std::string error;
-  const fs::path out = job.fresh_folder(&error);
+  const fs::path out = job.folders.fresh(&error);
   if (out.empty()) {
     c.error = "not rendered: " + error + " (an instructor must look)";
     return c;
@@ -73,7 +68,7 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
   struct Discard {  // the EXR is judged, and its PNGs drawn elsewhere: the folder goes
     const RenderJob& job;
     const fs::path& out;
-    ~Discard() { job.discard_folder(out.string()); }
+    ~Discard() { job.folders.discard(out.string()); }
   } discard{job, out};
   // Each render gets at most a third of what is left, and 20 s: a renderer
   // that hangs on the first scene leaves time for the others.
@@ -111,10 +106,8 @@ RenderComparison render_and_check(const RenderJob& job, const SceneRender& s, co
                               (fs::path(job.kit) / "scenes" / "library.json").string(), "--scene", s.name, "--render",
                               exr.string(), "--samples", std::to_string(s.samples), "--out", checked.string()},
                              &answer);
-  json j;
-  try {
-    j = json::parse(answer);
-  } catch (const json::exception&) {
+  const json j = json::parse(answer, nullptr, false);
+  if (!j.is_object()) {
     c.error = "pt-library-check failed (exit status " + std::to_string(rc) + "): an instructor must look";
     return c;
   }
@@ -145,7 +138,7 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
     return;
   }
   const fs::path tree(job.tree);
-  const std::string parts = list_text(job.student_parts, ";");
+  const std::string parts = joined(job.student_parts, ";");
 
   // The renderers: configured with the parts that earned points.
   std::string out;
@@ -156,7 +149,7 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
     rc = build({"cmake", "--build", (tree / "build").string(), "--target", "pathtracer"},
                std::max(1.0, std::min(job.build_seconds, seconds_until(end))), &out);
   if (rc != 0) {
-    page.renders_note = "No renders: the renderer with part(s) " + list_text(job.student_parts, ", ") +
+    page.renders_note = "No renders: the renderer with part(s) " + joined(job.student_parts, ", ") +
                         " of the submission did not build (an instructor must look).";
     notes->push_back("renderer build failed:\n" + out.substr(0, 4000));
     return;
@@ -226,16 +219,15 @@ void render_library(const RenderJob& job, const BuildRunner& build, Sandbox& san
       } else if (tried.size() == job.student_parts.size()) {
         c->suspect = "the parts together (each alone, with the solution for the rest, renders within the noise)";
       } else {
-        c->suspect = "one of part(s) " + list_text(job.student_parts, ", ") + " (the time ran out before each was tried alone)";
+        c->suspect = "one of part(s) " + joined(job.student_parts, ", ") + " (the time ran out before each was tried alone)";
       }
     }
   }
-  char took[64];
-  std::snprintf(took, sizeof took, "%.1f s", std::chrono::duration<double>(Clock::now() - start).count());
-  page.renders_note = "Rendered with the submission's part(s) " + list_text(job.student_parts, ", ") +
+  page.renders_note = "Rendered with the submission's part(s) " + joined(job.student_parts, ", ") +
                       " (those that earned points) and the solution for the rest, in the sandbox, at the library "
                       "test's sample count and seed; judged by the library test's own check (false-alarm "
-                      "probability 1e-5 per image). Renders and builds took " + std::string(took) +
+                      "probability 1e-5 per image). Renders and builds took " +
+                      number(std::chrono::duration<double>(Clock::now() - start).count(), "%.1f s") +
                       ". The renders do not change the score.";
 }
 

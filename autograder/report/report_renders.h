@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "report/html_report.h"
+#include "run/grade_part.h"
 #include "sandbox/sandbox.h"
 
 namespace pt::grade {
@@ -35,13 +36,11 @@ using BuildRunner = std::function<int(const std::vector<std::string>& argv, doub
 struct RenderJob {
   std::string kit;                 // the grading kit (its bin/pt-library-check, scenes/)
   std::string tree;                // the submission's build tree (tree/build is configured)
-  // A new empty folder for one render's images, made by the grader where
+  // A new empty folder for each render's images, made by the grader where
   // the sandbox cannot create anything (work_area.h), handed to the sandbox's
-  // user; "" with the reason in *error when none can be made. Each render
-  // has its own: nothing a render leaves is in a path the grader uses next.
-  std::function<std::string(std::string* error)> fresh_folder;
-  // Removes a render's folder once its image is judged.
-  std::function<void(const std::string&)> discard_folder;
+  // user, and removed once its image is judged: nothing a render leaves is in
+  // a path the grader uses next.
+  ImageFolders folders;
   // True when the submission's files are over the grader's disk bound: a
   // render is then stopped, and its image judged missing.
   std::function<bool()> over_bound;

@@ -1,6 +1,7 @@
 #include "report/report_text.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace pt::grade {
 namespace {
@@ -89,5 +90,20 @@ std::string summary(std::string_view text, const std::string& rest_is) {
   }
   return std::string(body.substr(0, i)) + "\n" + rest;
 }
+
+std::string number(double v, const char* format) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string points_number(double v) {
+  std::string s = number(v, "%.2f");
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+std::string points_text(double v) { return points_number(v) + (v == 1 ? " point" : " points"); }
 
 }  // namespace pt::grade

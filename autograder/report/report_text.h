@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace pt::grade {
@@ -47,5 +48,24 @@ inline constexpr size_t kSummaryLines = 6, kSummaryBytes = 1024;
 // `text` itself when short; else its first lines within kSummaryLines and
 // kSummaryBytes and a line saying where the rest is.
 std::string summary(std::string_view text, const std::string& rest_is);
+
+// A number as the reports show it: printf's `format`.
+std::string number(double v, const char* format = "%g");
+// "0.5", "12", "33.1": points at the precision they are given in (hundredths).
+std::string points_number(double v);
+// "1 point", "2.5 points".
+std::string points_text(double v);
+
+// "1, 3": each item (a number or a text) with `separator` between them.
+template <class Items>
+std::string joined(const Items& items, const std::string& separator) {
+  std::string out;
+  for (const auto& item : items) {
+    out += out.empty() ? "" : separator;
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(item)>>) out += std::to_string(item);
+    else out += item;
+  }
+  return out;
+}
 
 }  // namespace pt::grade

@@ -1,7 +1,5 @@
 #include "submission/check_submission.h"
 
-#include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +16,7 @@
 #include "process/command.h"
 #include "report/check_answer.h"
 #include "report/classroom_result.h"
+#include "report/report_text.h"
 #include "run/manifest.h"
 #include "submission/pipeline.h"
 
@@ -40,10 +39,7 @@ std::string indented(const std::string& text) { return folded(text, "   "); }
 // Whether the grader runs part `part`'s tests in a verifier and its task code
 // in a worker (boundary/README.md), as this build was configured.
 bool across_boundary(int part) {
-  std::istringstream parts(PT_BOUNDARY_PARTS);
-  for (std::string p; std::getline(parts, p, ',');)
-    if (p == std::to_string(part)) return true;
-  return false;
+  return std::string("," PT_BOUNDARY_PARTS ",").find("," + std::to_string(part) + ",") != std::string::npos;
 }
 
 // SHA-256 of each file by coreutils' sha256sum (one run for all of them);
@@ -161,33 +157,23 @@ namespace {
 // part the grader's reason when it will not grade it.
 class Answer : public Ending {
  public:
-  void say(const char* format, ...) __attribute__((format(printf, 2, 3))) {
-    char line[4096];
-    va_list args;
-    va_start(args, format);
-    std::vsnprintf(line, sizeof line, format, args);
-    va_end(args);
-    details += line;
-  }
   void heading(const char* text) { details += std::string("\n== ") + text + "\n"; }
 
   void refused(const TaskFile& file, Stage stage, const std::string& why) override {
     details += indented(why);
-    not_graded[file.part] = why;
     const char* what = stage == Stage::Includes ? ": rejected before building (step 2)"
                        : stage == Stage::Build  ? ": does not build (step 4)"
                        : stage == Stage::Reads  ? ": reads files the grader refuses (step 4)"
                                                 : ": not built (step 1)";
     problems.push_back("part " + std::to_string(file.part) + what);
   }
-  void accepted(const TaskFile& file) override { say("   %s: accepted\n", file.where.c_str()); }
+  void accepted(const TaskFile& file) override { details += "   " + file.where + ": accepted\n"; }
   void built(const TaskFile& file, double seconds) override {
-    say("   part %d: built in %.0f s\n", file.part, std::round(seconds));
+    details += "   part " + std::to_string(file.part) + ": built in " + number(seconds, "%.0f s") + "\n";
   }
 
   std::string details;
-  std::vector<std::string> problems;      // each a way the grader's result will differ from this one
-  std::map<int, std::string> not_graded;  // part -> the grader's reason
+  std::vector<std::string> problems;  // each a way the grader's result will differ from this one
 };
 
 // Stage 3 in the release's own build: each part as the grader builds it (a
@@ -204,7 +190,7 @@ class ReleaseBuild : public PartBuilder {
     const std::string part = "part" + std::to_string(f.part);
     const std::string target = part + (across ? "_worker" : "_tests");
     const std::string also = across ? " " + part + "_verify" : "";
-    answer_.say("   $ cmake --build %s --target %s%s\n", shown_.c_str(), target.c_str(), also.c_str());
+    answer_.details += "   $ cmake --build " + shown_ + " --target " + target + also + "\n";
     std::fprintf(stderr, "building part %d ...\n", f.part);
     std::vector<std::string> command{"cmake", "--build", build_.string(), "--target", target};
     if (across) command.push_back(part + "_verify");
@@ -236,7 +222,7 @@ class ReleaseBuild : public PartBuilder {
 // a submission elsewhere must be that.
 void compare_with_tasks(const fs::path& source, const Submission& sub, Answer& answer) {
   for (const auto& f : sub.files) {
-    answer.say("   %s: part %d\n", f.where.c_str(), f.part);
+    answer.details += "   " + f.where + ": part " + std::to_string(f.part) + "\n";
     std::ifstream built(source / "tasks" / f.name, std::ios::binary);
     std::ostringstream text;
     text << built.rdbuf();
@@ -248,8 +234,8 @@ void compare_with_tasks(const fs::path& source, const Submission& sub, Answer& a
 // Step 3: the files the grader has its own copy of.
 void check_shipped_files(const fs::path& source, const json& facts, Answer& answer) {
   const auto edits = edited_files(source, facts.at("files"));
-  if (edits.empty()) answer.say("   skeleton/, tests/, prebuilt/ and the build files are as shipped\n");
-  for (const auto& e : edits) answer.say("   %s\n", e.c_str());
+  if (edits.empty()) answer.details += "   skeleton/, tests/, prebuilt/ and the build files are as shipped\n";
+  for (const auto& e : edits) answer.details += "   " + e + "\n";
   if (edits.empty()) return;
   answer.details += indented("The grader builds your task files with its own copy of these files, not yours: a task "
                              "file that needs your change will not build there, or behave as it does here. Undo the "
@@ -259,7 +245,7 @@ void check_shipped_files(const fs::path& source, const json& facts, Answer& answ
 
 // Step 5: every part of the manifest, graded where it was built.
 Report grade_visible(const CheckOptions& opt, const Manifest& manifest, const fs::path& source, const fs::path& build,
-                     const Pipeline& pipeline, const Answer& answer) {
+                     const Pipeline& pipeline) {
   Report report;
   report.hidden_not_run = hidden_not_run_in(source.string());
   Sandbox sandbox(opt.sandbox);
@@ -277,17 +263,7 @@ Report grade_visible(const CheckOptions& opt, const Manifest& manifest, const fs
                            [](const std::string&) {}, true};
   std::error_code gone;
   fs::remove_all(image_root, gone);  // only this check's images, none of an earlier one
-  for (const auto& [part, tests] : manifest.parts) {
-    if (pipeline.built().count(part)) {
-      report.parts.push_back(pipeline.grade(part, tests, opt.limits, sandbox, Redactor(), &kept_images));
-      continue;
-    }
-    const auto reason = answer.not_graded.find(part);
-    const std::string not_sent = pipeline.not_submitted(part);
-    report.parts.push_back(pending_part(part, tests, reason != answer.not_graded.end() ? reason->second
-                                                     : !not_sent.empty()              ? not_sent
-                                                                                      : "not built"));
-  }
+  pipeline.grade(manifest, opt.limits, sandbox, Redactor(), &kept_images, report);
   report.complete = true;
   return report;
 }
@@ -316,10 +292,7 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
   started.parts.clear();
   std::string folded_parts;
   for (const auto& part : report.parts) {
-    PartAnswer a;
-    a.part = part.part;
-    a.earned = part.earned();
-    a.possible = part.possible();
+    PartAnswer a{part.part, "", part.earned(), part.possible(), {}, ""};
     if (auto h = report.hidden_not_run.find(part.part); h != report.hidden_not_run.end()) a.hidden = h->second;
     const TaskFile* file = nullptr;
     for (const auto& f : pipeline.submission().files)
@@ -335,9 +308,7 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
       a.state = task_file_state(file->text);
     }
     if (untouched(part)) {
-      int failed = 0;
-      for (const auto& t : part.tests) failed += !t.passed();
-      folded_parts += "  part " + std::to_string(part.part) + ": not started: its " + std::to_string(failed) +
+      folded_parts += "  part " + std::to_string(part.part) + ": not started: its " + std::to_string(part.tests.size()) +
                       " visible tests fail with \"not implemented\" (./build/tests/part" + std::to_string(part.part) +
                       "_tests lists them)\n";
     } else {
@@ -359,13 +330,15 @@ void print_check(const Report& report, const Pipeline& pipeline, const Answer& a
 int check_submission(const CheckOptions& opt) {
   const fs::path source = fs::absolute(opt.source_dir), build = fs::absolute(opt.build_dir);
   ResultChannel result(opt.format == "github-classroom");
+  // A check that stopped before any test ran: its result for GitHub Classroom says why.
+  const auto stopped = [&](const char* status, const std::string& what, const std::string& why, double points) {
+    if (result.active()) result.write(classroom_stopped(status, what, why, points));
+  };
   const json facts = read_facts(source);
   if (!fs::is_regular_file(build / "CMakeCache.txt")) {
     std::fprintf(stderr, "pt-grade: %s is not a configured build: set up the release first (README: Set up)\n",
                  build.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     build.string() + " is not a configured build", 0));
+    stopped("error", "pt-grade check-submission: could not check", build.string() + " is not a configured build", 0);
     return 2;
   }
   std::map<int, std::string> expected;
@@ -387,13 +360,10 @@ int check_submission(const CheckOptions& opt) {
   for (const auto& n : sub.notes) answer.details += indented(n);
   if (!taken) {
     print_not_checked();
-    std::string why = "submission rejected before building:";
-    for (const auto& p : sub.problems) why += "\n  " + p;
+    const std::string why = pipeline.rejection();
     std::fputs(indented(why).c_str(), stdout);
     std::printf("\nNOT READY: the grader would reject every part. Nothing was built.\n");
-    if (result.active())
-      result.write(classroom_stopped("fail", "The files: the grader would reject every part", why,
-                                     visible_points(build)));
+    stopped("fail", "The files: the grader would reject every part", why, visible_points(build));
     return 1;
   }
   compare_with_tasks(source, sub, answer);
@@ -405,25 +375,24 @@ int check_submission(const CheckOptions& opt) {
   ReleaseBuild release_build(source, build, opt.build_dir, answer);
   pipeline.build(release_build);
   if (!sandbox_unavailable().empty())
-    answer.say("   not checked here: pt-link-guard (it needs Linux); the grader runs it on each part's object\n");
+    answer.details += "   not checked here: pt-link-guard (it needs Linux); the grader runs it on each part's object\n";
 
   answer.heading("5. The visible tests");
   if (!sandbox_unavailable().empty())
-    answer.say("   run here as plain processes, each part's tests with its task file in one process; the grader runs "
-               "them in its sandbox, across the process boundary\n");
+    answer.details += "   run here as plain processes, each part's tests with its task file in one process; the grader "
+                      "runs them in its sandbox, across the process boundary\n";
   const fs::path manifest_path = build / "tests" / "graded_manifest.json";
   if (!fs::is_regular_file(manifest_path)) {
     std::printf("   %s not found: build the release first (README: Set up)\n", manifest_path.c_str());
-    if (result.active())
-      result.write(classroom_stopped("error", "pt-grade check-submission: could not check",
-                                     manifest_path.string() + " not found: the release is not built", 0));
+    stopped("error", "pt-grade check-submission: could not check",
+            manifest_path.string() + " not found: the release is not built", 0);
     return 2;
   }
   // The student cannot know whether the instructor counts the extension
   // tasks, so they are shown at 0 points, as the grader shows them by default.
   Manifest manifest = read_manifest(manifest_path.string());
   leave_extensions_uncounted(manifest);
-  const Report report = grade_visible(opt, manifest, source, build, pipeline, answer);
+  const Report report = grade_visible(opt, manifest, source, build, pipeline);
   print_check(report, pipeline, answer);
   if (result.active()) {
     std::map<int, ClassroomFile> files;

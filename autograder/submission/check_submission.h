@@ -1,25 +1,25 @@
 #pragma once
 // `pt-grade check-submission [TASKS]`, in the student release: what the
 // grader will do with the task files, as far as a release without the hidden
-// tests can tell. In the grader's order:
+// tests can tell: the stages of pipeline.h with the student's ending, and
+// one step of its own. The steps it prints:
 //
-//  1. the files: the grader's own intake (submission_files.h), names and all;
-//  2. what each file includes: the grader's allowlist (source_scan.h), with
-//     the framework's headers as shipped, and the grader's message;
+//  1. the files, taken by the grader's own intake;
+//  2. what each file includes, by the grader's allowlist and message;
 //  3. the files the grader has its own copy of (skeleton/, tests/, the
 //     build, prebuilt/): each compared with the SHA-256 the release shipped
 //     (prebuilt/release.json), an edit or an addition named, since the
 //     grader builds the task files without it;
-//  4. each part built on its own (`partN_tests`: that part's task file, the
-//     prebuilt solution of the others, pt-link-guard before the link), then
-//     the compiler's own list of the files it opened, as the grader checks it;
+//  4. each part built on its own, as the grader builds it (`partN_tests`, or
+//     a worker beside the visible tests' verifier), pt-link-guard before the
+//     link, then the compiler's list of the files it opened;
 //  5. the visible tests in the sandbox, scored as pt-grade run scores them,
 //     and per part the hidden points this release cannot run.
 //
 // It prints the answer first (check_answer.h: per part, whose the file is,
-// the visible score, what will differ at grading; READY or NOT READY), then
-// the steps above; the failures of a part not started (every visible test
-// "not implemented") are folded into one line.
+// the visible score, what will differ at grading; READY or NOT READY); the
+// failures of a part not started (every visible test "not implemented") are
+// folded into one line.
 //
 // Exit status 0 when nothing above differs from what the grader will do
 // (whatever the score), 1 when something does, 2 when it could not check.

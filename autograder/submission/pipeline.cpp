@@ -1,5 +1,6 @@
 #include "submission/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -72,7 +73,14 @@ bool Pipeline::take_files(const std::string& path) {
   return submission_.problems.empty();
 }
 
-std::string Pipeline::not_submitted(int part) const {
+std::string Pipeline::rejection() const {
+  std::string why = "submission rejected before building:";
+  for (const auto& p : submission_.problems) why += "\n  " + p;
+  return why;
+}
+
+std::string Pipeline::why_not_graded(int part) const {
+  if (const auto it = refused_.find(part); it != refused_.end()) return it->second;
   for (const auto& f : submission_.files)
     if (f.part == part) return "";
   const auto name = expected_.find(part);
@@ -80,17 +88,22 @@ std::string Pipeline::not_submitted(int part) const {
          " in the submission";
 }
 
+void Pipeline::refuse(const TaskFile& file, Stage stage, const std::string& why) {
+  if (stage != Stage::Files) refused_[file.part] = why;
+  ending_.refused(file, stage, why);
+}
+
 void Pipeline::check_includes(std::vector<std::string>* flags) {
   for (const auto& f : submission_.files) {
     if (!graded_.count(f.part)) {
-      ending_.refused(f, Stage::Files, "part " + std::to_string(f.part) + " has no graded tests in this kit; not built");
+      refuse(f, Stage::Files, "part " + std::to_string(f.part) + " has no graded tests in this kit; not built");
       continue;
     }
     std::string flagged;
     const std::string rejected = intake_rejection(f, headers_, flags ? &flagged : nullptr);
     if (flags && !flagged.empty()) flags->push_back(flagged);
     if (!rejected.empty()) {
-      ending_.refused(f, Stage::Includes, rejected);
+      refuse(f, Stage::Includes, rejected);
       continue;
     }
     ending_.accepted(f);
@@ -103,12 +116,12 @@ void Pipeline::build(PartBuilder& builder) {
     BuiltPart part;
     const auto start = std::chrono::steady_clock::now();
     if (const std::string why = builder.build(*f, &part); !why.empty()) {
-      ending_.refused(*f, Stage::Build, why);
+      refuse(*f, Stage::Build, why);
       continue;
     }
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (const auto reads = builder.unexpected_reads(*f); !reads.empty()) {
-      ending_.refused(*f, Stage::Reads,
+      refuse(*f, Stage::Reads,
                       "while compiling " + f->where + " the compiler read files outside the framework's headers and "
                       "the standard library: rejected.\n" + capped_list(reads, 50, 512));
       continue;
@@ -118,12 +131,22 @@ void Pipeline::build(PartBuilder& builder) {
   }
 }
 
-PartResult Pipeline::grade(int part, const PartManifest& tests, const GradeLimits& limits, Sandbox& sandbox,
-                           const Redactor& redactor, const ImageFolders* images) const {
-  const BuiltPart& b = built_.at(part);
-  // The log beside what was built from the task file (a verifier is shared).
-  const std::string log = (b.worker.empty() ? b.binary : b.worker) + ".grade.log";
-  return grade_binary(part, b.binary, tests, limits, sandbox, log, redactor, b.worker, images);
+void Pipeline::grade(const Manifest& manifest, const GradeLimits& limits, Sandbox& sandbox, const Redactor& redactor,
+                     const ImageFolders* images, Report& report, const std::function<void()>& after_each) const {
+  for (const auto& [part, tests] : manifest.parts) {
+    const auto slot = std::find_if(report.parts.begin(), report.parts.end(), [&](auto& p) { return p.part == part; });
+    PartResult& result = slot != report.parts.end() ? *slot : report.parts.emplace_back();
+    const auto b = built_.find(part);
+    if (b == built_.end()) {
+      const std::string why = why_not_graded(part);
+      result = pending_part(part, tests, why.empty() ? "not built" : why);
+      continue;
+    }
+    // The log beside what was built from the task file (a verifier is shared).
+    const std::string log = (b->second.worker.empty() ? b->second.binary : b->second.worker) + ".grade.log";
+    result = grade_binary(part, b->second.binary, tests, limits, sandbox, log, redactor, b->second.worker, images);
+    if (after_each) after_each();
+  }
 }
 
 }  // namespace pt::grade

@@ -16,6 +16,7 @@
 // What differs is where a part is built and what becomes of each stage's
 // result: each command is an Ending (submission.h: the grader's reports;
 // check_submission.h: the student's answer).
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -23,7 +24,9 @@
 
 #include "intake/submission_files.h"
 #include "report/redact.h"
+#include "report/report.h"
 #include "run/grade_part.h"
+#include "run/manifest.h"
 
 namespace pt::grade {
 
@@ -69,16 +72,19 @@ class Pipeline {
   void check_includes(std::vector<std::string>* flags);
   // 3.
   void build(PartBuilder& builder);
-  // 4. One part that was built.
-  PartResult grade(int part, const PartManifest& tests, const GradeLimits& limits, Sandbox& sandbox,
-                   const Redactor& redactor, const ImageFolders* images) const;
+  // 4. Every part of `manifest` into report.parts, in order: graded where it
+  // was built (`after_each` then called), else 0 with why_not_graded.
+  void grade(const Manifest& manifest, const GradeLimits& limits, Sandbox& sandbox, const Redactor& redactor,
+             const ImageFolders* images, Report& report, const std::function<void()>& after_each = {}) const;
 
   const Submission& submission() const { return submission_; }
   const std::vector<const TaskFile*>& buildable() const { return buildable_; }
   const std::map<int, BuiltPart>& built() const { return built_; }
   const std::map<int, std::string>& expected() const { return expected_; }
-  // Why a graded part was not submitted ("" when it was).
-  std::string not_submitted(int part) const;
+  // Stage 1's refusal of the whole submission, in the report's words.
+  std::string rejection() const;
+  // Why a part was not built: not submitted, or a stage's refusal ("" when neither).
+  std::string why_not_graded(int part) const;
 
  private:
   std::map<int, std::string> expected_;
@@ -88,6 +94,9 @@ class Pipeline {
   Submission submission_;
   std::vector<const TaskFile*> buildable_;
   std::map<int, BuiltPart> built_;
+  std::map<int, std::string> refused_;  // part -> why, from stages 2 and 3
+
+  void refuse(const TaskFile& file, Stage stage, const std::string& why);
 };
 
 // What a failed build printed that a student needs: the compiler's errors

@@ -48,12 +48,6 @@ std::set<std::string> framework_headers(const fs::path& kit) {
   return headers;
 }
 
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g s", s);
-  return buf;
-}
-
 bool layer_wanted(const SandboxOptions& sandbox, const char* layer) {
   return sandbox.confine && std::find(sandbox.without.begin(), sandbox.without.end(), layer) == sandbox.without.end();
 }
@@ -79,13 +73,9 @@ class Reports : public Ending {
     if (!opt_.html_path.empty()) write_html_report(opt_.html_path, page);
     if (!opt_.prairielearn_path.empty()) write_prairielearn_json(opt_.prairielearn_path, page);
   }
-  PartResult& part(int n) {
-    for (auto& p : report.parts)
-      if (p.part == n) return p;
-    throw std::logic_error("no part " + std::to_string(n) + " in the report");
-  }
   void set_part(int n, const std::string& why) {
-    if (manifest_.parts.count(n)) part(n) = pending_part(n, manifest_.parts.at(n), why);
+    for (auto& p : report.parts)  // the manifest's parts
+      if (p.part == n) p = pending_part(n, manifest_.parts.at(n), why);
   }
 
   void refused(const TaskFile& file, Stage stage, const std::string& why) override {
@@ -96,15 +86,9 @@ class Reports : public Ending {
   }
   void built(const TaskFile& file, double seconds) override {
     report.notes.push_back("part " + std::to_string(file.part) + ": built in " +
-                           seconds_text(std::round(seconds * 10) / 10));
+                           number(std::round(seconds * 10) / 10, "%g s"));
   }
 
-  // Every part given `why` at once: a submission rejected whole, or a grader
-  // that failed.
-  void ungradable(const std::string& why, const std::string& each) {
-    for (auto& p : report.parts) set_part(p.part, each);
-    report.ungradable = why;
-  }
   void finish() {
     report.complete = true;
     save();
@@ -201,7 +185,7 @@ class KitTree : public PartBuilder {
  private:
   std::string failure(const TaskFile& f, int rc, const std::string& out) {
     const bool timed_out = rc == 124 || rc == 137;
-    std::string why = timed_out ? f.where + " did not build within " + seconds_text(opt_.build_seconds) + ":\n"
+    std::string why = timed_out ? f.where + " did not build within " + number(opt_.build_seconds, "%g s") + ":\n"
                                 : f.where + " does not build: part " + std::to_string(f.part) + " scores 0.\n";
     if (const std::string bound = disk_bound_note(out, area_, stopped_); !bound.empty()) why += bound + ".\n";
     why += compiler_errors(out, tree_.string());
@@ -249,8 +233,7 @@ void render(const Grading& g, const Pipeline& pipeline, KitTree& tree, WorkArea&
   }
   job.seconds = std::min(g.opt.render_seconds, std::chrono::duration<double>(g.deadline - Clock::now()).count());
   job.build_seconds = g.opt.build_seconds;
-  job.fresh_folder = folders.fresh;
-  job.discard_folder = folders.discard;
+  job.folders = folders;
   if (!area.unbounded_reason().empty()) job.over_bound = [&area] { return area.exceeded(); };
   job.bound_note = [&area](const std::string& output, bool stopped) { return disk_bound_note(output, area, stopped); };
   if (job.seconds < 5) {
@@ -285,18 +268,13 @@ void grade_built(const Grading& g, Pipeline& pipeline, KitTree& tree, WorkArea& 
                                std::error_code ec;
                                if (!keep) fs::remove_all(dir, ec);
                              }};
-  for (const auto& [part, built] : pipeline.built()) {
-    out.part(part) = pipeline.grade(part, g.manifest.parts.at(part), limits, sandbox, g.redactor,
-                                    g.opt.html_path.empty() ? nullptr : &folders);
-    out.save();  // every process of that run is dead by now
-  }
+  // Saved after each part: every process of its run is dead by then.
+  pipeline.grade(g.manifest, limits, sandbox, g.redactor, g.opt.html_path.empty() ? nullptr : &folders, out.report,
+                 [&out] { out.save(); });
   if (g.opt.leaderboard) {
-    std::map<int, std::string> binaries, workers;
-    for (const auto& [part, built] : pipeline.built()) {
-      binaries[part] = built.binary;
-      if (!built.worker.empty()) workers[part] = built.worker;
-    }
-    add_leaderboard(out.report, g.kit.string(), binaries, workers, sandbox, g.deadline);
+    const auto two = pipeline.built().find(2);
+    const BuiltPart part2 = two != pipeline.built().end() ? two->second : BuiltPart{};
+    add_leaderboard(out.report, g.kit.string(), part2.binary, part2.worker, sandbox, g.deadline);
     out.save();
   }
   if (g.opt.renders && (!g.opt.html_path.empty() || !g.opt.prairielearn_path.empty()))
@@ -359,16 +337,16 @@ int grade_submission(const SubmissionOptions& opt) {
   const Submission& sub = pipeline.submission();
   for (const auto& n : sub.notes) out.report.notes.push_back(n);
   if (!taken) {
-    std::string why = "submission rejected before building:";
-    for (const auto& p : sub.problems) why += "\n  " + p;
+    const std::string why = pipeline.rejection();
     // Said once, in the notes; each part's tests say its first lines.
-    out.ungradable(why, summary(why, "the whole list is in the report's notes"));
+    for (auto& p : out.report.parts) out.set_part(p.part, summary(why, "the whole list is in the report's notes"));
+    out.report.ungradable = why;
     out.report.notes.push_back(why);
     out.finish();
     return 0;
   }
   for (const auto& p : out.report.parts)
-    if (const std::string why = pipeline.not_submitted(p.part); !why.empty()) out.set_part(p.part, why);
+    if (const std::string why = pipeline.why_not_graded(p.part); !why.empty()) out.set_part(p.part, why);
   // 2. What each file may include, and what an instructor should read.
   pipeline.check_includes(&out.report.instructor_notes);
   out.save();

@@ -1,26 +1,19 @@
 #pragma once
 // `pt-grade submission PATH`: grades a student's submission end to end
 // (docs/architecture.md, "The course loop"): the stages of pipeline.h with
-// the grader's ending, in this order:
+// the grader's ending.
 //
-//  1. read the grading kit's manifest (the trusted list of graded tests);
-//     results.json is written at once, every part 0 of its maximum;
-//  2. take the task files from the folder or zip (submission_files.h): any
-//     other file rejects the submission before anything is built;
-//  3. read each task file (source_scan.h): an #include outside the standard
-//     library, GLM and the framework, or a file over 1 MiB, rejects that part;
-//     the flags go to the instructor;
-//  4. copy the kit (no solution source: the solution is prebuilt) to a fresh
-//     folder, put the task files in it, and build each part's test binary on
-//     its own: a compile error costs only that part, and its first errors go
-//     to the report; pt-link-guard checks each link, and the compiler's own
-//     list of the files it read is checked against the task file, the
-//     framework's headers and what the kit's header probe read (the
-//     standard library and GLM: dependency_check.h);
-//  5. grade each part, hidden tests included, in the sandbox: the kit's
-//     verifier beside the part's worker (boundary/README.md; grade_part.h),
-//     rewriting results.json as each part finishes;
-//  6. render the scene library with the student's working parts (report.html).
+//  - The grading kit's manifest (the trusted list of graded tests) is read
+//    first; results.json is written at once, every part 0 of its maximum.
+//  - Each part is built on its own in a fresh copy of the kit (no solution
+//    source: the solution is prebuilt), confined: a compile error costs only
+//    that part, its first errors go to the report; pt-link-guard checks each
+//    link, and the compiler's list of the files it read is checked against
+//    what the kit's header probe read (dependency_check.h).
+//  - Each part is graded, hidden tests included, in the sandbox: the kit's
+//    verifier beside the part's worker (boundary/README.md), results.json
+//    rewritten as each part finishes; then the scene library is rendered
+//    with the student's working parts (report.html).
 //
 // Time: each part's build and each part's grading have their own limit, and
 // the whole submission a budget (autograder/README.md has the numbers).
