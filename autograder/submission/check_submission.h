@@ -4,15 +4,16 @@
 // tests can tell. In the grader's order:
 //
 //  1. the files: the grader's own intake (submission_files.h), names and all;
-//  2. what each file includes: the grader's allowlist (source_scan.h), with
-//     the framework's headers as shipped, and the grader's message;
+//  2. the directives that read a file as data (file_directives.h), with the
+//     grader's message;
 //  3. the files the grader has its own copy of (skeleton/, tests/, the
 //     build, prebuilt/): each compared with the SHA-256 the release shipped
 //     (prebuilt/release.json), an edit or an addition named, since the
 //     grader builds the task files without it;
 //  4. each part built on its own (`partN_tests`: that part's task file, the
 //     prebuilt solution of the others, pt-link-guard before the link), then
-//     the compiler's own list of the files it opened, as the grader checks it;
+//     the compiler's own list of the files it opened (what each file
+//     includes), as the grader checks it;
 //  5. the visible tests in the sandbox, scored as pt-grade run scores them,
 //     and per part the hidden points this release cannot run.
 //

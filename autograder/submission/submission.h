@@ -7,9 +7,8 @@
 //     results.json is written at once, every part 0 of its maximum;
 //  2. take the task files from the folder or zip (submission_files.h): any
 //     other file rejects the submission before anything is built;
-//  3. read each task file (source_scan.h): an #include outside the standard
-//     library, GLM and the framework, or a file over 1 MiB, rejects that part;
-//     the flags go to the instructor;
+//  3. read each task file (file_directives.h): an #embed or an assembler's
+//     .incbin, or a file over 1 MiB, rejects that part;
 //  4. copy the kit (no solution source: the solution is prebuilt) to a fresh
 //     folder, put the task files in it, and build each part's test binary on
 //     its own: a compile error costs only that part, and its first errors go
