@@ -53,7 +53,7 @@ std::map<int, std::string> numbered_files(const std::vector<std::string>& args, 
   for (const auto& b : args) {
     const auto eq = b.find('=');
     const int n = eq == std::string::npos ? 0 : std::atoi(b.substr(0, eq).c_str());
-    if (n < 1) throw std::runtime_error(std::string(option) + " expects N=FILE, got " + b);
+    if (n < 1 || n > 99) throw std::runtime_error(std::string(option) + " expects N=FILE, got " + b);
     files[n] = b.substr(eq + 1);
   }
   return files;
@@ -183,11 +183,7 @@ int write_manifest_from(const std::string& out, const std::vector<std::string>& 
   Sandbox sandbox(plain);
   Manifest m;
   std::map<int, std::string> sources;
-  for (const auto& item : listed) {
-    const auto eq = item.find('=');
-    const int part = eq == std::string::npos ? 0 : std::atoi(item.substr(0, eq).c_str());
-    if (part < 1 || part > 99) throw std::runtime_error("expected PART=BINARY, got " + item);
-    const std::string binary = item.substr(eq + 1);
+  for (const auto& [part, binary] : numbered_files(listed, "manifest")) {
     m.parts[part] = list_tests(part, binary, sandbox);
     sources[part] = fs::path(binary).filename().string();
   }
@@ -238,6 +234,9 @@ struct Common {
                          ""};
 
   void add_sandbox_choice(CLI::App* cmd) {
+    cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
+        ->type_name("USER")
+        ->capture_default_str();
     cmd->add_option("--sandbox-without", opt.sandbox.without, "leave out these layers, to test the fallbacks")
         ->delimiter(',')
         ->check(CLI::IsMember({"namespaces", "user", "landlock", "seccomp"}))
@@ -257,9 +256,6 @@ struct Common {
     cmd->add_option("--part-budget,--timeout", opt.limits.part_seconds, "time allowed to all runs of one part")
         ->check(seconds)
         ->type_name("SECONDS")
-        ->capture_default_str();
-    cmd->add_option("--sandbox-user", opt.sandbox.user, "who runs the code under test when pt-grade is root")
-        ->type_name("USER")
         ->capture_default_str();
     cmd->add_option("--sandbox-read", opt.sandbox.readable, "a path the code under test may read (repeatable)")
         ->type_name("PATH");
@@ -415,8 +411,6 @@ Command add_check_submission(CLI::App& app, Common& c) {
 
 Command add_sandbox(CLI::App& app, Common& c) {
   CLI::App* cmd = app.add_subcommand("sandbox", "print the sandbox layers this machine offers (JSON)");
-  cmd->add_option("--sandbox-user", c.opt.sandbox.user, "who runs the code under test when pt-grade is root")
-      ->type_name("USER");
   c.add_sandbox_choice(cmd);
   return {cmd, [&c] { return print_sandbox(c.opt.sandbox); }};
 }

@@ -2,9 +2,9 @@
 // of a task file, and keeps the compiler's list of the files it opened: the
 // files a task file may read through the C++ standard library and GLM on that
 // compiler (pt-grade submission checks each part's dependency list against
-// it; autograder/README.md, the kit's build). It includes every header the
-// intake allows (source_scan.cpp, standard_headers(); a test keeps the two in
-// step) and GLM's. A header this standard library lacks (libc++ has no
+// it; autograder/README.md, the kit's build). It includes every header of the
+// C++17 standard library, the C headers C++ keeps, and GLM's: this list is
+// what a task file may include besides the framework's headers. A header this standard library lacks (libc++ has no
 // <bits/stdc++.h> nor, before LLVM 16, <memory_resource>; macOS has no
 // <uchar.h>; libc++ no <cstdalign>) is left out: a task file that includes it fails to compile there.
 #if __has_include(<bits/stdc++.h>)

@@ -567,13 +567,6 @@ int main(int argc, char** argv) {
   if (expect.contains("note"))
     c.expect(std::regex_search(results.value("output", ""), std::regex(expect["note"].get<std::string>())),
              "no note matching /" + expect["note"].get<std::string>() + "/ in the report's output");
-  if (expect.contains("flag")) {  // the source flags pt-grade submission shows the instructor
-    std::string flags;
-    for (const auto& t : results.value("tests", json::array()))
-      if (t.value("name", "") == "Instructor: source flags") flags = t.value("output", "");
-    c.expect(std::regex_search(flags, std::regex(expect["flag"].get<std::string>())),
-             "no source flag matching /" + expect["flag"].get<std::string>() + "/ for the instructor: " + flags.substr(0, 300));
-  }
   std::printf("sizes: results.json %zu bytes, standard output %zu bytes\n", settled.size(), printed.size());
   if (expect.contains("max_results_bytes"))
     c.expect(settled.size() <= expect["max_results_bytes"].get<size_t>(),

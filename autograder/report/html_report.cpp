@@ -226,10 +226,6 @@ std::string html_page(const HtmlReport& page, const TextBounds& bounds, size_t* 
 
   // For the instructor.
   h << "<h2>For the instructor</h2>\n";
-  if (!r.instructor_notes.empty()) {
-    h << "<p>Source flags (they do not change the score; each is a place to read):</p>";
-    h << "<pre>" << esc(instructor_text(r, bounds)) << "</pre>";
-  }
   const std::vector<std::string> notes = all_notes(r, bounds);
   if (!notes.empty()) {
     h << "<ul>";

@@ -9,7 +9,7 @@
 //    reference images, a false-colour difference image and relMSE, with an
 //    image whose error is far beyond what its sample count explains marked,
 //    and the part it most likely points at;
-//  * what the instructor should read: source flags, build times, the sandbox
+//  * what the instructor should read: build times, the sandbox
 //    layers that were active or missing, notes.
 // Hidden tests are shown with their messages: the page is the instructor's
 // (students see results.json on Gradescope, where hidden tests stay hidden).

@@ -15,9 +15,8 @@
 //   tests     every graded test: name, description (what the handout's
 //             grading table says it checks, and the task's section), points,
 //             max_points, message, output. A hidden test is shown by its task
-//             and points only (PrairieLearn has no "after the deadline"), and
-//             the instructor's source flags are left out: students see all
-//             of this file that PrairieLearn renders.
+//             and points only (PrairieLearn has no "after the deadline"):
+//             students see all of this file that PrairieLearn renders.
 // The whole file is at most kMaxResultsBytes (PrairieLearn's limit is 1 MB).
 #include <cstddef>
 #include <string>

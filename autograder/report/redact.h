@@ -7,7 +7,7 @@
 // test's reach; this stops the plain copy where Landlock is missing (or the
 // files are readable some other way). A submission that encodes the text
 // (base64, reversed, one word per test) is not stopped by it: that takes
-// deliberate code the source flags show an instructor.
+// deliberate code, in the task file an instructor can read.
 #include <cstdint>
 #include <set>
 #include <string>

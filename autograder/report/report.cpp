@@ -71,11 +71,6 @@ std::vector<std::string> all_notes(const Report& report, const TextBounds& bound
   return kept;
 }
 
-std::string instructor_text(const Report& report, const TextBounds& bounds) {
-  std::string flags;
-  for (const auto& n : report.instructor_notes) flags += n + "\n";
-  return capped(flags, bounds.flags);
-}
 
 std::string folded(const std::string& text, const std::string& indent, size_t width) {
   std::string out;
@@ -129,14 +124,6 @@ json results_document(const Report& report, const TextBounds& bounds) {
     }
     parts[std::to_string(p.part)] = {
         {"earned", p.earned()}, {"possible", p.possible()}, {"graded", p.graded}, {"runs", p.runs}, {"seconds", p.seconds}};
-  }
-  if (!report.instructor_notes.empty()) {
-    tests.push_back({{"name", "Instructor: source flags"},
-                     {"score", 0.0},
-                     {"max_score", 0.0},
-                     {"status", "passed"},
-                     {"output", instructor_text(report, bounds)},
-                     {"visibility", "hidden"}});
   }
   std::string text;
   for (const auto& n : all_notes(report, bounds)) text += n + "\n";
@@ -239,8 +226,6 @@ void print_report(const Report& report, bool show_hidden) {
     }
     if (failed && !p.log.empty()) std::printf("      (part %d output: %s)\n", p.part, p.log.c_str());
   }
-  if (!report.instructor_notes.empty()) std::printf("\nFor the instructor (no effect on the score):\n");
-  for (const auto& n : report.instructor_notes) std::fputs(first_lines(n, 12, "  ").c_str(), stdout);
   const auto notes = all_notes(report, TextBounds{});
   if (!notes.empty()) std::printf("\nNotes:\n");
   for (const auto& n : notes) std::fputs(folded(n, "  ").c_str(), stdout);

@@ -31,9 +31,6 @@ struct Report {
   std::vector<PartResult> parts;
   std::map<int, HiddenNotRun> hidden_not_run;  // by part
   std::vector<std::string> notes;  // for the instructor: missing binaries, sandbox layers missing, ...
-  // For the instructor's eyes only (the source flags of pt-grade submission):
-  // in results.json as a hidden test worth nothing, never shown to students.
-  std::vector<std::string> instructor_notes;
   std::vector<std::string> sandbox_layers, sandbox_missing, sandbox_ids;
   // results.json's "leaderboard", written only when not empty: only when the
   // instructor turned it on (pt-grade submission --leaderboard).
@@ -64,8 +61,6 @@ struct TextBounds;
 // Every note of the report (the parts' with their part named), each and all
 // together within `bounds` (report_text.h).
 std::vector<std::string> all_notes(const Report& report, const TextBounds& bounds);
-// The instructor's source flags as one text within `bounds`.
-std::string instructor_text(const Report& report, const TextBounds& bounds);
 
 // What a report says of one test: its failure message (nothing when it
 // passed) and, for a test that hung or crashed, the last output before it

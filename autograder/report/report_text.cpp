@@ -68,7 +68,7 @@ std::string capped_list(const std::vector<std::string>& items, size_t max_items,
 
 TextBounds TextBounds::halved() const {
   auto half = [](size_t v) { return std::max<size_t>(v / 2, 256); };
-  return {half(message), half(output), half(note), half(notes), half(flags)};
+  return {half(message), half(output), half(note), half(notes)};
 }
 
 std::string summary(std::string_view text, const std::string& rest_is) {

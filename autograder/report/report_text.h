@@ -24,7 +24,7 @@ std::string capped(std::string_view text, size_t max_cost);
 
 // At most max_items of `items`, each capped, then a line saying how many were
 // left out: for lists a submission can make as long as it likes (intake
-// refusals, source flags, files the compiler read).
+// refusals, files the compiler read).
 std::string capped_list(const std::vector<std::string>& items, size_t max_items, size_t max_item_cost);
 
 // The bounds (JSON cost) of each kind of text in a report.
@@ -33,7 +33,6 @@ struct TextBounds {
   size_t output = 2048;     // a test's last output before it stopped
   size_t note = 16384;      // one note
   size_t notes = 65536;     // all notes together
-  size_t flags = 65536;     // the instructor's source flags together
   TextBounds halved() const;
 };
 

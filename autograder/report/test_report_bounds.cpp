@@ -72,7 +72,7 @@ TEST(ReportBounds, APartLevelReasonIsNotCopiedIntoEveryTest) {
 }
 
 // 500 tests, each with 64 KiB of the costliest characters (384 KiB of JSON) in
-// its message and output, notes and flags: 380 MB uncapped.
+// its message and output, and notes: 380 MB uncapped.
 Report costly_report() {
   const std::string costly(64 << 10, '\x01');
   Report report;
@@ -88,7 +88,6 @@ Report costly_report() {
     part.notes.push_back(costly);
   }
   report.parts.push_back(part);
-  report.instructor_notes.push_back(costly);
   report.notes.push_back(costly);
   return report;
 }
@@ -102,7 +101,7 @@ TEST(ReportBounds, ResultsJsonFitsWhateverTheMessages) {
   s << in.rdbuf();
   EXPECT_LE(s.str().size(), kMaxResultsBytes);
   const auto doc = nlohmann::json::parse(s.str());
-  EXPECT_EQ(doc["tests"].size(), 501u);  // every test listed, and the flags
+  EXPECT_EQ(doc["tests"].size(), 500u);  // every test listed
   EXPECT_NE(doc["tests"][0]["output"].get<std::string>().find("pt-grade cut"), std::string::npos);
   std::remove(path.c_str());
 }
@@ -137,7 +136,7 @@ TEST(ReportBounds, PrairieLearnResultsFitWhateverTheMessagesAndRenders) {
   EXPECT_LE(text.size(), kMaxResultsBytes);
   const auto doc = nlohmann::json::parse(text);
   EXPECT_TRUE(doc["gradable"].get<bool>());
-  EXPECT_EQ(doc["tests"].size(), 500u);  // the instructor's flags are not the student's
+  EXPECT_EQ(doc["tests"].size(), 500u);
   size_t image_bytes = 0;
   for (const auto& image : doc["images"]) image_bytes += image["url"].get<std::string>().size();
   EXPECT_GT(doc["images"].size(), 0u);

@@ -161,7 +161,7 @@ class Answer : public Ending {
 
   void refused(const TaskFile& file, Stage stage, const std::string& why) override {
     details += indented(why);
-    const char* what = stage == Stage::Includes ? ": rejected before building (step 2)"
+    const char* what = stage == Stage::Directives ? ": rejected before building (step 2)"
                        : stage == Stage::Build  ? ": does not build (step 4)"
                        : stage == Stage::Reads  ? ": reads files the grader refuses (step 4)"
                                                 : ": not built (step 1)";
@@ -347,12 +347,9 @@ int check_submission(const CheckOptions& opt) {
     expected[std::stoi(part)] = name.get<std::string>();
     parts.insert(std::stoi(part));
   }
-  std::set<std::string> headers;
-  for (const auto& [name, hash] : facts.at("files").items())
-    if (name.rfind("skeleton/", 0) == 0 && fs::path(name).extension() == ".h") headers.insert(name.substr(9));
 
   Answer answer;
-  Pipeline pipeline(expected, headers, parts, answer);
+  Pipeline pipeline(expected, parts, answer);
   std::printf("pt-grade check-submission %s: what the grader will do with these files.\n", opt.tasks.c_str());
   answer.heading("1. The files, taken as the grader takes them");
   const bool taken = pipeline.take_files(opt.tasks);
@@ -367,8 +364,8 @@ int check_submission(const CheckOptions& opt) {
     return 1;
   }
   compare_with_tasks(source, sub, answer);
-  answer.heading("2. What each file includes (the grader's allowlist)");
-  pipeline.check_includes(nullptr);
+  answer.heading("2. What each file reads as data (#embed, the assembler's .incbin)");
+  pipeline.check_directives();
   answer.heading("3. The files the grader has its own copy of");
   check_shipped_files(source, facts, answer);
   answer.heading("4. Each part built on its own, as the grader builds it");

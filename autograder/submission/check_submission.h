@@ -5,14 +5,16 @@
 // one step of its own. The steps it prints:
 //
 //  1. the files, taken by the grader's own intake;
-//  2. what each file includes, by the grader's allowlist and message;
+//  2. the directives that read a file as data (file_directives.h), with the
+//     grader's message;
 //  3. the files the grader has its own copy of (skeleton/, tests/, the
 //     build, prebuilt/): each compared with the SHA-256 the release shipped
 //     (prebuilt/release.json), an edit or an addition named, since the
 //     grader builds the task files without it;
 //  4. each part built on its own, as the grader builds it (`partN_tests`, or
 //     a worker beside the visible tests' verifier), pt-link-guard before the
-//     link, then the compiler's list of the files it opened;
+//     link, then the compiler's list of the files it opened (what each file
+//     includes), as the grader checks it;
 //  5. the visible tests in the sandbox, scored as pt-grade run scores them,
 //     and per part the hidden points this release cannot run.
 //

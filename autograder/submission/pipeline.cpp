@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "report/report_text.h"
-#include "source_scan.h"
+#include "intake/file_directives.h"
 
 namespace pt::grade {
 
@@ -13,21 +13,19 @@ namespace {
 
 // A submission decides how many findings there are (a million refused lines):
 // the first ones are listed, each capped, then how many more there are.
-std::string joined_findings(const std::vector<SourceFinding>& found, const std::string& file) {
+std::string joined_findings(const std::vector<FileDirective>& found, const std::string& file) {
   std::vector<std::string> lines;
   for (const auto& f : found) lines.push_back(file + ":" + std::to_string(f.line) + ": " + f.what);
   return capped_list(lines, 100, 512);
 }
 
 // Stage 2 for one task file: "" when it may be built, else why not (the
-// report's text); the instructor's source flags go to *flags.
-std::string intake_rejection(const TaskFile& f, const std::set<std::string>& headers, std::string* flags) {
+// report's text).
+std::string intake_rejection(const TaskFile& f) {
   if (f.too_large)
     return f.where + " is larger than " + std::to_string(kMaxTaskFileBytes >> 20) + " MiB: rejected before building";
-  const SourceScan scan = scan_task_source(f.text, headers);
-  if (flags && !scan.flags.empty())
-    *flags = "source flags in " + f.where + " (the score is not affected):\n" + joined_findings(scan.flags, f.where);
-  if (!scan.rejections.empty()) return f.where + " rejected before building:\n" + joined_findings(scan.rejections, f.where);
+  const auto found = file_directives(f.text);
+  if (!found.empty()) return f.where + " rejected before building:\n" + joined_findings(found, f.where);
   return "";
 }
 
@@ -64,9 +62,8 @@ std::string compiler_errors(const std::string& output, const std::string& tree_d
   return text;
 }
 
-Pipeline::Pipeline(std::map<int, std::string> expected, std::set<std::string> headers, std::set<int> graded,
-                   Ending& ending)
-    : expected_(std::move(expected)), headers_(std::move(headers)), graded_(std::move(graded)), ending_(ending) {}
+Pipeline::Pipeline(std::map<int, std::string> expected, std::set<int> graded, Ending& ending)
+    : expected_(std::move(expected)), graded_(std::move(graded)), ending_(ending) {}
 
 bool Pipeline::take_files(const std::string& path) {
   submission_ = read_submission(path, expected_);
@@ -93,17 +90,14 @@ void Pipeline::refuse(const TaskFile& file, Stage stage, const std::string& why)
   ending_.refused(file, stage, why);
 }
 
-void Pipeline::check_includes(std::vector<std::string>* flags) {
+void Pipeline::check_directives() {
   for (const auto& f : submission_.files) {
     if (!graded_.count(f.part)) {
       refuse(f, Stage::Files, "part " + std::to_string(f.part) + " has no graded tests in this kit; not built");
       continue;
     }
-    std::string flagged;
-    const std::string rejected = intake_rejection(f, headers_, flags ? &flagged : nullptr);
-    if (flags && !flagged.empty()) flags->push_back(flagged);
-    if (!rejected.empty()) {
-      refuse(f, Stage::Includes, rejected);
+    if (const std::string rejected = intake_rejection(f); !rejected.empty()) {
+      refuse(f, Stage::Directives, rejected);
       continue;
     }
     ending_.accepted(f);

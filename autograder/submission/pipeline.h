@@ -5,12 +5,12 @@
 //
 //  1. the files (intake/submission_files.h): anything but task files, in a
 //     folder or a zip, rejects the whole submission before anything is built;
-//  2. each file's encoding and includes (source_scan.h): a refusal costs that
-//     part only; the flags go to the instructor;
+//  2. each file's directives that read a file as data
+//     (intake/file_directives.h): a refusal costs that part only;
 //  3. each part built on its own by a PartBuilder (the grading kit's confined
 //     tree, or the student's own build), then the compiler's own list of the
-//     files it read checked (compile/dependency_check.h): a refusal costs
-//     that part only;
+//     files it read checked (compile/dependency_check.h: what a task file
+//     includes): a refusal costs that part only;
 //  4. each part built graded in the sandbox (run/grade_part.h).
 //
 // What differs is where a part is built and what becomes of each stage's
@@ -30,7 +30,7 @@
 
 namespace pt::grade {
 
-enum class Stage { Files, Includes, Build, Reads };
+enum class Stage { Files, Directives, Build, Reads };
 
 // A part built: its test binary, or its verifier (the kit's tests) and the
 // worker built from the task file (boundary/README.md).
@@ -61,15 +61,14 @@ class Ending {
 
 class Pipeline {
  public:
-  // `expected`: each part's task file name; `headers`: the framework's headers
-  // a task file may include; `graded`: the parts that have graded tests (a
-  // file of another part is refused at stage 1).
-  Pipeline(std::map<int, std::string> expected, std::set<std::string> headers, std::set<int> graded, Ending& ending);
+  // `expected`: each part's task file name; `graded`: the parts that have
+  // graded tests (a file of another part is refused at stage 1).
+  Pipeline(std::map<int, std::string> expected, std::set<int> graded, Ending& ending);
 
   // 1. False when the submission is rejected whole: submission().problems.
   bool take_files(const std::string& path);
-  // 2. `flags`, when given, receives the instructor's source flags.
-  void check_includes(std::vector<std::string>* flags);
+  // 2.
+  void check_directives();
   // 3.
   void build(PartBuilder& builder);
   // 4. Every part of `manifest` into report.parts, in order: graded where it
@@ -88,7 +87,6 @@ class Pipeline {
 
  private:
   std::map<int, std::string> expected_;
-  std::set<std::string> headers_;
   std::set<int> graded_;
   Ending& ending_;
   Submission submission_;

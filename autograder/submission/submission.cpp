@@ -40,14 +40,6 @@ std::map<int, std::string> task_file_names(const fs::path& kit) {
   return names;
 }
 
-std::set<std::string> framework_headers(const fs::path& kit) {
-  std::set<std::string> headers;
-  const fs::path include = kit / "include";
-  for (const auto& e : fs::recursive_directory_iterator(include))
-    if (e.is_regular_file()) headers.insert(fs::relative(e.path(), include).generic_string());
-  return headers;
-}
-
 bool layer_wanted(const SandboxOptions& sandbox, const char* layer) {
   return sandbox.confine && std::find(sandbox.without.begin(), sandbox.without.end(), layer) == sandbox.without.end();
 }
@@ -331,7 +323,7 @@ int grade_submission(const SubmissionOptions& opt) {
 
   std::set<int> graded;
   for (const auto& [part, tests] : manifest.parts) graded.insert(part);
-  Pipeline pipeline(task_file_names(kit), framework_headers(kit), graded, out);
+  Pipeline pipeline(task_file_names(kit), graded, out);
   // 1. The files.
   const bool taken = pipeline.take_files(opt.path);
   const Submission& sub = pipeline.submission();
@@ -347,8 +339,8 @@ int grade_submission(const SubmissionOptions& opt) {
   }
   for (const auto& p : out.report.parts)
     if (const std::string why = pipeline.why_not_graded(p.part); !why.empty()) out.set_part(p.part, why);
-  // 2. What each file may include, and what an instructor should read.
-  pipeline.check_includes(&out.report.instructor_notes);
+  // 2. The directives that read a file as data.
+  pipeline.check_directives();
   out.save();
 
   // An error not foreseen still ends in a complete report saying what failed.

@@ -5,11 +5,15 @@
 //
 //  - The grading kit's manifest (the trusted list of graded tests) is read
 //    first; results.json is written at once, every part 0 of its maximum.
+//  - The task files are taken from the folder or zip (submission_files.h),
+//    and each is read for the directives that read a file as data
+//    (file_directives.h: an #embed or an assembler's .incbin).
 //  - Each part is built on its own in a fresh copy of the kit (no solution
 //    source: the solution is prebuilt), confined: a compile error costs only
 //    that part, its first errors go to the report; pt-link-guard checks each
 //    link, and the compiler's list of the files it read is checked against
-//    what the kit's header probe read (dependency_check.h).
+//    the task file, the framework's headers and what the kit's header probe
+//    read (dependency_check.h).
 //  - Each part is graded, hidden tests included, in the sandbox: the kit's
 //    verifier beside the part's worker (boundary/README.md), results.json
 //    rewritten as each part finishes; then the scene library is rendered

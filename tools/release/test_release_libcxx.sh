@@ -66,10 +66,10 @@ grep -q "third_party/boost/include/boost/math/distributions/students_t.hpp" deps
   { echo "the shipped Boost.Math was not read"; exit 1; }
 own=build/autograder/pt-grade  # the release's ($grade is the checkout's, with its sandbox)
 [ -x "$own" ] || { echo "pt-grade was not built"; exit 1; }
-for b in build/autograder/pt-link-guard build/tests/part1_verify build/tests/part1_worker; do
+for b in build/autograder/compile/pt-link-guard build/tests/part1_verify build/tests/part1_worker; do
   [ ! -e "$b" ] || { echo "$b was built without the sandbox"; exit 1; }
 done
-if ninja -C build -t targets all | grep -E '^(autograder/pt-link-guard|tests/part[1-5]_(verify|worker)):'; then
+if ninja -C build -t targets all | grep -E '^(autograder/compile/pt-link-guard|tests/part[1-5]_(verify|worker)):'; then
   echo "a target of the grader's Linux part is defined without the sandbox"; exit 1
 fi
 "$here/check_portable.sh" build

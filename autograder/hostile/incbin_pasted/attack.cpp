@@ -1,7 +1,7 @@
-// Hostile: read the solution while the submission is built, past the source
-// scanner. The assembler's .incbin copies any file the compiler can read into
-// the program; here the directive's name is pasted together by the
-// preprocessor, so that the word appears nowhere in the file. Every task then
+// Hostile: read the solution while the submission is built, past the intake's
+// search. The assembler's directive that copies a file into the program
+// copies any file the compiler can read; here its name is pasted together by
+// the preprocessor, so that the word appears nowhere in the file. Every task then
 // throws the file's text, each byte flipped so that a report that removes the
 // solution's lines does not recognise them.
 #include <stdexcept>

@@ -2,9 +2,7 @@
 // solution, with a helper in namespace pt::grading and another in pt::test
 // that collide with nothing the grader links and are the file's own
 // (internal linkage: pt-link-guard refuses any external definition in the
-// test side's namespaces). The source flags must show them to the
-// instructor, and the score must not change: a flag is for a person to
-// read, never a penalty.
+// test side's namespaces). The score must not change.
 namespace pt::grading {
 static int task_file_helper_calls = 0;
 }

@@ -29,8 +29,8 @@
 #include <string>
 #include <vector>
 
-#include "command.h"
-#include "part_calls.h"
+#include "compile/part_calls.h"
+#include "process/command.h"
 
 namespace {
 
@@ -204,7 +204,7 @@ int main(int argc, char** argv) {
         const int part = part_of(object);
         if (auto it = solution_symbols.find(s.name); it != solution_symbols.end() && !may_call(part, name))
           refuse("uses " + name + ", part " + std::to_string(it->second) + "'s solution, which part " +
-                 std::to_string(part) + "'s tasks are not specified to call (autograder/part_calls.h)");
+                 std::to_string(part) + "'s tasks are not specified to call (autograder/compile/part_calls.h)");
       }
     }
     if (problems.empty()) return 0;

@@ -1,6 +1,6 @@
 #pragma once
 // What each part's task file may call beyond its own code, the framework and
-// the C++ library: the one table pt-link-guard reads (link_guard.cpp).
+// the C++ library: the one table pt-link-guard reads (compile/link_guard.cpp).
 //
 // A part is graded with the other parts' solutions linked beside it, so a
 // task file could hand a task to another part's solution: Part 1's pixel
