@@ -128,7 +128,7 @@ void Pipeline::build(PartBuilder& builder) {
 void Pipeline::grade(const Manifest& manifest, const GradeLimits& limits, Sandbox& sandbox, const Redactor& redactor,
                      const ImageFolders* images, Report& report, const std::function<void()>& after_each) const {
   for (const auto& [part, tests] : manifest.parts) {
-    const auto slot = std::find_if(report.parts.begin(), report.parts.end(), [&](auto& p) { return p.part == part; });
+    const auto slot = std::find_if(report.parts.begin(), report.parts.end(), [part = part](auto& p) { return p.part == part; });
     PartResult& result = slot != report.parts.end() ? *slot : report.parts.emplace_back();
     const auto b = built_.find(part);
     if (b == built_.end()) {
