@@ -28,18 +28,24 @@ struct Unchanging {
 template <class P, class Role>
 class HeldArgument;
 
-// IN: a value, or a const reference to one.
+// IN: a value, or a const reference to one. A Ray's range is mutable (an
+// intersection shortens it through a const reference), so each call of a run
+// gets the ray as sent, as a call made alone would.
 template <class P>
 class HeldArgument<P, InTag> : public Unchanging {
  public:
   template <class Object>
   HeldArgument(Reader& in, Object& object) {
-    get_value(in, value_, object);
+    get_value(in, sent_, object);
+    value_ = sent_;
+  }
+  void fresh() {
+    if constexpr (std::is_same_v<std::decay_t<P>, Ray>) value_ = sent_;
   }
   P arg(Rng*) { return value_; }
 
  private:
-  std::decay_t<P> value_{};
+  std::decay_t<P> sent_{}, value_{};
 };
 
 // OUT: a pointer the function writes through; a fresh value each call.
