@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "process/launcher.h"  // Fd
+
 namespace pt::grade {
 
 namespace {
@@ -36,13 +38,6 @@ const char* caption_of(const std::string& name) {
   if (name == "difference") return "|difference| of illuminance, false colour to its 99th percentile";
   return "smallest p of each cell of the finest grid: black p = 1, white at the threshold, red below it";
 }
-
-struct Fd {
-  int fd;
-  ~Fd() {
-    if (fd >= 0) ::close(fd);
-  }
-};
 
 }  // namespace
 
@@ -87,23 +82,23 @@ std::vector<TestImage> take_test_images(const std::string& folder, const std::st
   if (test.empty() || test.find('/') != std::string::npos || test[0] == '.') return images;
   // Each step opened without following a link: the folder is the grader's,
   // what is in it may have been planted.
-  const Fd top{::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)};
-  if (top.fd < 0) return images;
-  const Fd dir{::openat(top.fd, test.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)};
-  if (dir.fd < 0) {
+  const Fd top(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+  if (top.get() < 0) return images;
+  const Fd dir(::openat(top.get(), test.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+  if (dir.get() < 0) {
     if (errno != ENOENT) *refused += "its folder: not a folder (" + std::string(std::strerror(errno)) + ")\n";
     return images;
   }
   for (const char* name : kTestImageNames) {
     const std::string file = std::string(name) + ".png";
     // O_NONBLOCK: a FIFO planted under this name must not hang the grader.
-    const Fd f{::openat(dir.fd, file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC)};
-    if (f.fd < 0) {
+    const Fd f(::openat(dir.get(), file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC));
+    if (f.get() < 0) {
       if (errno != ENOENT) *refused += file + ": " + std::strerror(errno) + "\n";
       continue;
     }
     struct stat st{};
-    if (::fstat(f.fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (::fstat(f.get(), &st) != 0 || !S_ISREG(st.st_mode)) {
       *refused += file + ": not a regular file\n";
       continue;
     }
@@ -114,7 +109,7 @@ std::vector<TestImage> take_test_images(const std::string& folder, const std::st
     }
     std::string bytes(size_t(st.st_size), '\0');
     size_t got = 0;
-    for (ssize_t r; got < bytes.size() && (r = ::read(f.fd, bytes.data() + got, bytes.size() - got)) != 0;) {
+    for (ssize_t r; got < bytes.size() && (r = ::read(f.get(), bytes.data() + got, bytes.size() - got)) != 0;) {
       if (r < 0 && errno == EINTR) continue;
       if (r < 0) break;
       got += size_t(r);

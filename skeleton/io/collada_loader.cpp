@@ -50,7 +50,7 @@ XmlNode cgl_technique(XmlNode e) {
   return XmlNode();
 }
 
-XmlNode first_element(XmlNode e) {
+XmlNode first_child_element(XmlNode e) {
   for (XmlNode c : e.children())
     if (c.type() == pugi::node_element) return c;
   return XmlNode();
@@ -131,7 +131,7 @@ class ColladaLoader {
         doc_.warn(unit, "unit meter=\"" + ColladaDocument::quoted(meter) +
                             "\" ignored: lengths are used as written, as the course's loader does");
     }
-    if (XmlNode animations = root.child("library_animations"); first_element(animations))
+    if (XmlNode animations = root.child("library_animations"); first_child_element(animations))
       doc_.warn(animations, "animations ignored: the scene is rendered in the pose its nodes give");
   }
 
@@ -434,7 +434,7 @@ class ColladaLoader {
     const bool cgl = bool(technique);
     if (!cgl) technique = light.child("technique_common");
     if (!technique) doc_.fail(light, "has neither a <technique_common> nor a CGL <technique>");
-    XmlNode type = first_element(technique);
+    XmlNode type = first_child_element(technique);
     if (!type) doc_.fail(technique, "names no light type");
     const char* name = type.name();
     if (is(name, "spot")) return warn_once(light, "spot lights are not supported: skipped");
