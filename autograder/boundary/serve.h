@@ -28,9 +28,11 @@ struct Unchanging {
 template <class P, class Role>
 class HeldArgument;
 
-// IN: a value, or a const reference to one. A Ray's range is mutable (an
-// intersection shortens it through a const reference), so each call of a run
-// gets the ray as sent, as a call made alone would.
+// IN: a value, or a const reference to one. A value is copied for each call;
+// what a reference points at is made as sent again before each call, since a
+// const reference still lets a task change mutable members (an intersection
+// shortens a Ray's range), and a call of a run must see what a call made
+// alone would.
 template <class P>
 class HeldArgument<P, InTag> : public Unchanging {
  public:
@@ -40,7 +42,7 @@ class HeldArgument<P, InTag> : public Unchanging {
     value_ = sent_;
   }
   void fresh() {
-    if constexpr (std::is_same_v<std::decay_t<P>, Ray>) value_ = sent_;
+    if constexpr (std::is_reference_v<P>) value_ = sent_;
   }
   P arg(Rng*) { return value_; }
 
